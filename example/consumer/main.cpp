@@ -1,0 +1,31 @@
+// Smallest program using the installed plugin: proves that the headers, the library and its dependencies
+// (ViSP, OpenCV, Highway) are all found through find_package(VISP_SSL).
+#include <cstdlib>
+#include <iostream>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/ssl/vpSSLMatchingFunction.h>
+#include <visp3/ssl/vpSSLTarget.h>
+
+int main()
+{
+  try {
+    const vpSSLTarget target = vpSSLTarget::ssl3a3();
+    const vpSSLMatchingFunction match(40, target.getP());
+
+    // A uniform image has no self-similar structure: its matching map is 0 everywhere.
+    vpImage<unsigned char> I(64, 64, 128);
+    vpImage<int> M;
+    match.compute(I, M);
+    const int maxValue = M.getMaxValue();
+
+    std::cout << "visp-ssl consumer: target " << target.getName() << " with " << target.size()
+              << " landmarks, matching window " << match.getWindow() << " (SIMD "
+              << vpSSLMatchingFunction::getSimdTarget() << "), max of the map on a uniform image: " << maxValue
+              << std::endl;
+    return maxValue == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  } catch (const vpException &e) {
+    std::cerr << "visp-ssl consumer: " << e.getMessage() << std::endl;
+    return EXIT_FAILURE;
+  }
+}

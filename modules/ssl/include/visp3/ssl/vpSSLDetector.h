@@ -1,0 +1,163 @@
+/*!
+  \file vpSSLDetector.h
+  \brief Self-similar landmark and target detector, a vpDetectorBase.
+*/
+#ifndef VP_SSL_DETECTOR_H
+#define VP_SSL_DETECTOR_H
+
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/core/vpRect.h>
+#include <visp3/detection/vpDetectorBase.h>
+#include <visp3/ssl/vpSSLBrightnessNormalizer.h>
+#include <visp3/ssl/vpSSLLandmark.h>
+#include <visp3/ssl/vpSSLMatchingFunction.h>
+#include <visp3/ssl/vpSSLPeakDetector.h>
+#include <visp3/ssl/vpSSLRadiusEstimator.h>
+#include <visp3/ssl/vpSSLTargetIdentifier.h>
+#include <visp3/visual_features/vpFeaturePoint.h>
+
+/*!
+  \struct vpSSLDetectorTimes
+  \ingroup group_ssl
+  \brief Time spent by each stage of the last detect() call, in milliseconds.
+*/
+struct VISP_SSL_EXPORT vpSSLDetectorTimes
+{
+  double normalization = 0.;  ///< Brightness normalisation.
+  double matching = 0.;       ///< Matching map (Eq. 5).
+  double peaks = 0.;          ///< Peak detection.
+  double radius = 0.;         ///< Ring reading, radius and centre refinement (Eq. 7).
+  double identification = 0.; ///< Target identification.
+  double total = 0.;          ///< Whole detect().
+};
+
+/*!
+  \class vpSSLDetector
+  \ingroup group_ssl
+  \brief Detects circular self-similar landmarks and identifies the target among them.
+
+  The pipeline follows the paper: brightness normalisation (Sec. 5), the four-direction matching
+  function (Eq. 5) over the image or inside regions of interest (Sec. 4.1), its local maxima over a
+  threshold (Sec. 3.1), the apparent radius at each (Eq. 7) and the target identification (Sec. 3.2).
+
+  Each detected landmark is an object of vpDetectorBase: its polygon is the outer ellipse (16
+  vertices), its message is "<target> <label>" for a landmark of the target ("ssl3-a3 B") and "ssl"
+  for any other landmark.
+
+  \code
+  #include <visp3/ssl/vpSSLDetector.h>
+
+  vpSSLDetector detector;                       // ssl3-a3, w = 40
+  if (detector.detect(I)) {
+    for (const vpSSLLandmark &l : detector.getLandmarks())
+      std::cout << l.u << " " << l.v << " r=" << l.radius << std::endl;
+    if (detector.getTargetMatch().found) {
+      std::vector<vpFeaturePoint> s = detector.getFeaturePoints(cam);
+    }
+  }
+  \endcode
+  See tutorial-ssl-detector.cpp.
+*/
+class VISP_SSL_EXPORT vpSSLDetector : public vpDetectorBase
+{
+public:
+  //! Detector for \e target (default ssl3-a3).
+  explicit vpSSLDetector(const vpSSLTarget &target = vpSSLTarget::ssl3a3());
+
+  /*!
+    Detects the landmarks and identifies the target in \e I.
+    \return true if at least one landmark was found.
+    \exception vpException on an empty image.
+  */
+  bool detect(const vpImage<unsigned char> &I) override;
+
+  //! Window length w of the matching function (default 40, paper Sec. 2.1).
+  void setWindow(unsigned int w);
+  //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.25).
+  void setThreshold(double threshold);
+  //! Brightness normalisation before matching (default on, paper Fig. 13).
+  void setBrightnessNormalization(bool enable) { m_normalize = enable; }
+  //! Worker threads of the matching function (0: all cores).
+  void setNbThreads(unsigned int n) { m_match.setNbThreads(n); }
+  //! Largest apparent radius searched (px, default 300).
+  void setMaxRadius(double r);
+  /*!
+    Small-landmark mode (default off). The discrete matching function needs rings of a few pixels and a
+    window not much larger than 1.4 times the apparent radius (beyond it the white paper around the
+    landmark adds negative terms to Eq. 2), so with w = 40 at full resolution the centre of a landmark
+    whose smaller semi-axis is below about 25 px is no longer a peak. This mode matches on the image
+    upsampled twice (bilinear) with a window of 20, which finds landmarks down to 8 px of radius (a
+    0.1 m landmark at 8 m through a 640x480 camera of 640 px focal length) for about twice the
+    matching cost. Coordinates and radii are reported in the original image.
+  */
+  void setSmallLandmarkMode(bool enable);
+  //! Whether the small-landmark mode is on.
+  bool getSmallLandmarkMode() const { return m_upsample; }
+  /*!
+    Restricts the next detections to these rectangles (empty: whole image). Landmarks whose centre
+    lies inside a rectangle are found as long as the rectangle extends w around them.
+  */
+  void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_rois = rois; }
+
+  unsigned int getWindow() const { return m_window; } ///< Window length w (at full resolution).
+  double getThreshold() const { return m_threshold; }            ///< Score threshold.
+  bool getBrightnessNormalization() const { return m_normalize; } ///< Whether normalisation is on.
+  const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); } ///< Target model.
+
+  //! Landmarks of the last detection, best score first.
+  const std::vector<vpSSLLandmark> &getLandmarks() const { return m_landmarks; }
+  //! Target identified in the last detection.
+  const vpSSLTargetMatch &getTargetMatch() const { return m_targetMatch; }
+  //! The landmark matched to target landmark \e i in the last detection, or nullptr.
+  const vpSSLLandmark *getMatchedLandmark(size_t i) const;
+  //! Stage times of the last detection.
+  const vpSSLDetectorTimes &getTimes() const { return m_times; }
+  //! Matching map of the last detection (zero outside the regions of interest).
+  const vpImage<int> &getMatchingMap() const { return m_map; }
+  //! The matching function in use.
+  const vpSSLMatchingFunction &getMatchingFunction() const { return m_match; }
+
+  /*!
+    Visual features of the matched landmarks, in target landmark order (unmatched ones skipped):
+    normalised coordinates through \e cam (distortion included) and depth Z from the apparent
+    radius (Eq. 6: \f$ Z = p_x R / r \f$).
+  */
+  std::vector<vpFeaturePoint> getFeaturePoints(const vpCameraParameters &cam) const;
+
+  /*!
+    Range to the landmark centre from its apparent radius (Eq. 6), in metres.
+    \param landmark : detected landmark.
+    \param radius : its printed outer radius (m).
+    \param cam : camera model (its px is the focal length in pixels).
+  */
+  static double range(const vpSSLLandmark &landmark, double radius, const vpCameraParameters &cam);
+
+private:
+  void fillObjects();
+
+  vpSSLBrightnessNormalizer m_normalizer;
+  vpSSLMatchingFunction m_match;
+  vpSSLPeakDetector m_peakDetector;
+  vpSSLRadiusEstimator m_radiusEstimator;
+  vpSSLTargetIdentifier m_identifier;
+  bool m_normalize;
+  bool m_upsample;
+  unsigned int m_window;
+  double m_maxRadius;
+  double m_threshold;
+  std::vector<vpRect> m_rois;
+
+  vpImage<unsigned char> m_normalized;
+  vpImage<unsigned char> m_upsampled;
+  std::vector<vpRect> m_scaledRois;
+  vpImage<int> m_map;
+  std::vector<vpSSLPeak> m_peaks;
+  std::vector<vpSSLLandmark> m_landmarks;
+  vpSSLTargetMatch m_targetMatch;
+  vpSSLDetectorTimes m_times;
+};
+
+#endif

@@ -1,0 +1,81 @@
+/*!
+  \file vpSSLRadiusEstimator.h
+  \brief Apparent radius (paper Eq. 7), ellipse and sub-pixel centre of a landmark candidate.
+*/
+#ifndef VP_SSL_RADIUS_ESTIMATOR_H
+#define VP_SSL_RADIUS_ESTIMATOR_H
+
+#include <vector>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/ssl/vpSSLLandmark.h>
+#include <visp3/ssl/vpSSLMatchingFunction.h>
+
+/*!
+  \class vpSSLRadiusEstimator
+  \ingroup group_ssl
+  \brief Reads the ring pattern around a candidate centre: verifies it, measures the outer radius along
+  eight directions, fits the outer ellipse and refines the centre.
+
+  The paper estimates the apparent size by sweeping the window w of the matching function (Eq. 7,
+  Fig. 4). On a printed sheet the white paper outside the outermost black ring continues the pattern
+  by one ring, so that sweep peaks near \f$ R/\sqrt{p} \f$ rather than R (the paper notes the
+  overestimate under Fig. 5). The sweep is kept (radiusEq7, sweep()) for comparison; the radius
+  reported is read from the rings themselves: along each ray from the centre the profile is compared
+  with the printed square wave \f$ s_p(\rho / R) \f$ for every R in the search range, ring by ring,
+  and the largest R whose outermost ring is dark against the next one and whose rings alternate as
+  printed wins. A ray whose rings do not alternate (clutter, occlusion) is discarded; a candidate
+  with too few readable rays is rejected, which is what keeps chessboards, textures and striped fish
+  out.
+
+  The centre is refined from the midpoints of the ring edges on opposite rays; under perspective the
+  rings are not concentric (their centres drift with the square of their radius), so the midpoints
+  are extrapolated to radius 0, the projection of the landmark's centre.
+*/
+class VISP_SSL_EXPORT vpSSLRadiusEstimator
+{
+public:
+  vpSSLRadiusEstimator();
+
+  //! Search range of the outer radius (px). \exception vpException unless 2 <= minRadius < maxRadius.
+  void setRadiusRange(double minRadius, double maxRadius);
+  //! Smallest number of the 8 rays that must show the pattern (default 6).
+  void setMinDirections(unsigned int n);
+  //! Similarity ratio p of the printed landmark (default 0.5).
+  void setP(double p);
+  double getMinRadius() const { return m_minRadius; }          ///< Lower bound of the radius search (px).
+  double getMaxRadius() const { return m_maxRadius; }          ///< Upper bound of the radius search (px).
+  unsigned int getMinDirections() const { return m_minDirections; } ///< Rays needed to accept a landmark.
+
+  /*!
+    Measures the landmark whose centre is near (\e landmark.u, \e landmark.v) on the normalised image.
+    Fills radius, minorRadius, theta, directionalRadius, nbDirections and refines u, v.
+    \return false if the ring pattern is not there (the candidate is not a landmark).
+  */
+  bool estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
+
+  /*!
+    Eq. 7 sweep: \e S[w] is the +x matching sum with window w at pixel (u, v), for w up to
+    \e maxWindow (or the image border).
+    \return the w maximising S (the paper's apparent size), 0 if the sweep is empty.
+  */
+  static unsigned int sweep(const vpImage<unsigned char> &I, const vpSSLMatchingFunction &match, int u, int v,
+                            unsigned int maxWindow, std::vector<int> &S);
+
+private:
+  bool readRays(const vpImage<unsigned char> &I, double u, double v, double maxRadius);
+  bool fitRay(int d, double &radius) const;
+  double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
+  bool ringEdge(int d, double expected, double halfWidth, double &position) const;
+
+  double m_minRadius;
+  double m_maxRadius;
+  unsigned int m_minDirections;
+  double m_p;
+  double m_step;
+  // Per-ray profiles and their prefix sums, reused between candidates.
+  std::vector<float> m_profile[8];
+  std::vector<double> m_prefix[8];
+};
+
+#endif

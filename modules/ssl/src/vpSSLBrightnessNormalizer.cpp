@@ -1,0 +1,71 @@
+#include <visp3/ssl/vpSSLBrightnessNormalizer.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <visp3/core/vpException.h>
+
+vpSSLBrightnessNormalizer::vpSSLBrightnessNormalizer() : m_low(1.), m_high(99.), m_maxGain(10.) {}
+
+void vpSSLBrightnessNormalizer::setPercentiles(double low, double high)
+{
+  if (!(low >= 0. && low < high && high <= 100.)) {
+    throw vpException(vpException::badValue, "vpSSLBrightnessNormalizer: percentiles %g, %g: need 0 <= low < high <= 100",
+                      low, high);
+  }
+  m_low = low;
+  m_high = high;
+}
+
+void vpSSLBrightnessNormalizer::setMaxGain(double gain)
+{
+  if (!(gain >= 1.)) {
+    throw vpException(vpException::badValue, "vpSSLBrightnessNormalizer: max gain %g < 1", gain);
+  }
+  m_maxGain = gain;
+}
+
+void vpSSLBrightnessNormalizer::apply(const vpImage<unsigned char> &I, vpImage<unsigned char> &O) const
+{
+  O.resize(I.getHeight(), I.getWidth());
+  const size_t n = static_cast<size_t>(I.getSize());
+  if (n == 0) {
+    return;
+  }
+  unsigned int hist[256] = {0};
+  const unsigned char *src = I.bitmap;
+  for (size_t i = 0; i < n; ++i) {
+    ++hist[src[i]];
+  }
+  const double nLow = m_low * 0.01 * static_cast<double>(n), nHigh = m_high * 0.01 * static_cast<double>(n);
+  int lo = 0, hi = 255;
+  double acc = 0.;
+  bool haveLo = false;
+  for (int g = 0; g < 256; ++g) {
+    acc += hist[g];
+    if (!haveLo && acc > nLow) {
+      lo = g;
+      haveLo = true;
+    }
+    if (acc >= nHigh) {
+      hi = g;
+      break;
+    }
+  }
+  double gain = hi > lo ? 255. / (hi - lo) : m_maxGain;
+  double offset = lo;
+  if (gain > m_maxGain) {
+    // Stretch about the middle of the range instead of amplifying noise without bound.
+    gain = m_maxGain;
+    offset = 0.5 * (lo + hi) - 127.5 / gain;
+  }
+  unsigned char lut[256];
+  for (int g = 0; g < 256; ++g) {
+    const double value = std::round((g - offset) * gain);
+    lut[g] = static_cast<unsigned char>(std::min(255., std::max(0., value)));
+  }
+  unsigned char *dst = O.bitmap;
+  for (size_t i = 0; i < n; ++i) {
+    dst[i] = lut[src[i]];
+  }
+}

@@ -1,0 +1,235 @@
+#include <visp3/ssl/vpSSLDetector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpPixelMeterConversion.h>
+
+namespace
+{
+// Window of the small-landmark mode on the twice upsampled image: 1.25 times the 16 px that an 8 px
+// landmark measures there (the response fades once w exceeds about 1.4 R, Eq. 2).
+const unsigned int kSmallModeWindow = 20;
+// Smallest apparent radius read (px): below it the rings are thinner than a pixel.
+const double kMinRadius = 4.;
+
+// Twice the resolution, bilinear, pixel centres kept: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...).
+void upsample2(const vpImage<unsigned char> &I, vpImage<unsigned char> &O)
+{
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  O.resize(2 * H, 2 * W);
+  for (int v = 0; v < 2 * H; ++v) {
+    const int v0 = (v - 1) >> 1, v1 = std::min(H - 1, v0 + 1);
+    const int wv1 = (v & 1) ? 3 : 1; // weight of row v0 in quarters
+    const int r0 = std::max(0, v0);
+    for (int u = 0; u < 2 * W; ++u) {
+      const int u0 = (u - 1) >> 1, u1 = std::min(W - 1, u0 + 1);
+      const int wu1 = (u & 1) ? 3 : 1;
+      const int c0 = std::max(0, u0);
+      const int top = wu1 * I[r0][c0] + (4 - wu1) * I[r0][u1];
+      const int bottom = wu1 * I[v1][c0] + (4 - wu1) * I[v1][u1];
+      O[v][u] = static_cast<unsigned char>((wv1 * top + (4 - wv1) * bottom + 8) >> 4);
+    }
+  }
+}
+
+double elapsedMs(std::chrono::steady_clock::time_point &t)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+  t = now;
+  return ms;
+}
+} // namespace
+
+vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
+  : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
+    m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_maxRadius(300.), m_threshold(0.12), m_rois()
+{
+  m_radiusEstimator.setP(target.getP());
+}
+
+void vpSSLDetector::setWindow(unsigned int w)
+{
+  m_match.setWindow(w);
+  m_window = w;
+  if (m_upsample) {
+    m_match.setWindow(kSmallModeWindow);
+  }
+}
+
+void vpSSLDetector::setSmallLandmarkMode(bool enable)
+{
+  m_upsample = enable;
+  m_match.setWindow(enable ? kSmallModeWindow : m_window);
+}
+
+void vpSSLDetector::setThreshold(double threshold)
+{
+  if (!(threshold >= 0. && threshold <= 1.)) {
+    throw vpException(vpException::badValue, "vpSSLDetector: threshold %g not in [0, 1]", threshold);
+  }
+  m_threshold = threshold;
+}
+
+void vpSSLDetector::setMaxRadius(double r)
+{
+  if (!(r > kMinRadius)) {
+    throw vpException(vpException::badValue, "vpSSLDetector: max radius %g must be > %g px", r, kMinRadius);
+  }
+  m_maxRadius = r;
+}
+
+bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
+{
+  auto t0 = std::chrono::steady_clock::now();
+  auto t = t0;
+  m_polygon.clear();
+  m_message.clear();
+  m_nb_objects = 0;
+  m_landmarks.clear();
+  m_targetMatch = vpSSLTargetMatch();
+  m_targetMatch.detection.assign(getTarget().size(), -1);
+  m_times = vpSSLDetectorTimes();
+  if (I.getSize() == 0) {
+    throw vpException(vpException::dimensionError, "vpSSLDetector::detect: empty image");
+  }
+
+  const vpImage<unsigned char> *In = &I;
+  if (m_normalize) {
+    m_normalizer.apply(I, m_normalized);
+    In = &m_normalized;
+  }
+  const std::vector<vpRect> *rois = &m_rois;
+  const double scale = m_upsample ? 2. : 1.;
+  if (m_upsample) {
+    upsample2(*In, m_upsampled);
+    In = &m_upsampled;
+    m_scaledRois.clear();
+    for (const vpRect &r : m_rois) {
+      m_scaledRois.push_back(vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
+    }
+    rois = &m_scaledRois;
+  }
+  m_times.normalization = elapsedMs(t);
+
+  if (rois->empty()) {
+    m_match.compute(*In, m_map);
+  } else {
+    m_match.compute(*In, *rois, m_map);
+  }
+  m_times.matching = elapsedMs(t);
+
+  const int maxValue = m_match.getMaxValue();
+  m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
+  m_peakDetector.detect(m_map, m_peaks, *rois);
+  m_times.peaks = elapsedMs(t);
+
+  m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
+  for (const vpSSLPeak &peak : m_peaks) {
+    vpSSLLandmark l;
+    l.u = peak.u;
+    l.v = peak.v;
+    l.score = std::min(1., static_cast<double>(peak.value) / maxValue);
+    if (!m_radiusEstimator.estimate(*In, l)) {
+      continue;
+    }
+    std::vector<int> S;
+    l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, static_cast<int>(std::lround(l.u)),
+                                              static_cast<int>(std::lround(l.v)),
+                                              static_cast<unsigned int>(1.5 * scale * m_maxRadius), S);
+    if (m_upsample) {
+      l.u = 0.5 * (l.u + 0.5) - 0.5;
+      l.v = 0.5 * (l.v + 0.5) - 0.5;
+      l.radius *= 0.5;
+      l.minorRadius *= 0.5;
+      l.radiusEq7 *= 0.5;
+      for (double &r : l.directionalRadius) {
+        r *= 0.5;
+      }
+    }
+    // Two peaks on the same landmark: keep the stronger one (peaks come strongest first).
+    bool duplicate = false;
+    for (const vpSSLLandmark &k : m_landmarks) {
+      if (std::hypot(k.u - l.u, k.v - l.v) < 0.5 * std::min(k.minorRadius, l.minorRadius)) {
+        duplicate = true;
+        break;
+      }
+    }
+    if (duplicate) {
+      continue;
+    }
+    m_landmarks.push_back(l);
+  }
+  std::stable_sort(m_landmarks.begin(), m_landmarks.end(),
+                   [](const vpSSLLandmark &a, const vpSSLLandmark &b) { return a.score > b.score; });
+  m_times.radius = elapsedMs(t);
+
+  m_targetMatch = m_identifier.identify(m_landmarks);
+  m_times.identification = elapsedMs(t);
+
+  fillObjects();
+  m_times.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return !m_landmarks.empty();
+}
+
+void vpSSLDetector::fillObjects()
+{
+  const vpSSLTarget &target = getTarget();
+  std::vector<std::string> labels(m_landmarks.size(), "ssl");
+  for (size_t k = 0; k < m_targetMatch.detection.size(); ++k) {
+    if (m_targetMatch.detection[k] >= 0) {
+      labels[m_targetMatch.detection[k]] = target.getName() + " " + target.getLandmark(k).name;
+    }
+  }
+  const int nbVertices = 16;
+  for (size_t i = 0; i < m_landmarks.size(); ++i) {
+    const vpSSLLandmark &l = m_landmarks[i];
+    std::vector<vpImagePoint> polygon;
+    const double c = std::cos(l.theta), s = std::sin(l.theta);
+    const double b = l.minorRadius > 0. ? l.minorRadius : l.radius;
+    for (int k = 0; k < nbVertices; ++k) {
+      const double a = 2. * M_PI * k / nbVertices;
+      const double x = l.radius * std::cos(a), y = b * std::sin(a);
+      polygon.push_back(vpImagePoint(l.v + s * x + c * y, l.u + c * x - s * y));
+    }
+    m_polygon.push_back(polygon);
+    m_message.push_back(labels[i]);
+  }
+  m_nb_objects = m_landmarks.size();
+}
+
+const vpSSLLandmark *vpSSLDetector::getMatchedLandmark(size_t i) const
+{
+  if (i >= m_targetMatch.detection.size() || m_targetMatch.detection[i] < 0) {
+    return nullptr;
+  }
+  return &m_landmarks[m_targetMatch.detection[i]];
+}
+
+double vpSSLDetector::range(const vpSSLLandmark &landmark, double radius, const vpCameraParameters &cam)
+{
+  if (!(landmark.radius > 0.)) {
+    throw vpException(vpException::badValue, "vpSSLDetector::range: landmark radius %g px", landmark.radius);
+  }
+  return cam.get_px() * radius / landmark.radius;
+}
+
+std::vector<vpFeaturePoint> vpSSLDetector::getFeaturePoints(const vpCameraParameters &cam) const
+{
+  std::vector<vpFeaturePoint> features;
+  for (size_t k = 0; k < m_targetMatch.detection.size(); ++k) {
+    const vpSSLLandmark *l = getMatchedLandmark(k);
+    if (l == nullptr) {
+      continue;
+    }
+    double x, y;
+    vpPixelMeterConversion::convertPoint(cam, l->u, l->v, x, y);
+    vpFeaturePoint s;
+    s.buildFrom(x, y, range(*l, getTarget().getLandmark(k).radius, cam));
+    features.push_back(s);
+  }
+  return features;
+}

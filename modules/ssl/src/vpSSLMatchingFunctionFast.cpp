@@ -1,0 +1,262 @@
+/*
+  Fast matching function (issue 4): the SIMD kernel of vpSSLMatchingKernel.cpp driven over spans of rows, split
+  across threads, for the whole image or for regions of interest. Every pixel is computed independently with
+  integer arithmetic, so the map is the same as computeReference() whatever the target or the thread count.
+*/
+#include <visp3/ssl/vpSSLMatchingFunction.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <thread>
+
+#include <visp3/core/vpException.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "vpSSLMatchingKernel.h"
+
+namespace {
+namespace kernel = vpSSLMatchingKernel;
+
+// Half-open pixel rectangle [u0, u1) x [v0, v1).
+struct Box
+{
+  int u0, v0, u1, v1;
+};
+
+// Pixels [u0, u1) of row v.
+struct Span
+{
+  int v, u0, u1;
+};
+
+struct AlignedFree
+{
+  void operator()(uint8_t *p) const { std::free(p); }
+};
+
+/*
+  Buffers reused from call to call (per calling thread, so that concurrent calls on one const object stay safe):
+  after the first frame of a given size nothing is allocated.
+*/
+struct Scratch
+{
+  std::unique_ptr<uint8_t, AlignedFree> padded;
+  std::size_t paddedCapacity = 0;
+  std::vector<Box> boxes;
+  std::vector<int> rowFirst;    // merged intervals of row v: intervals[rowFirst[v] .. rowFirst[v + 1])
+  std::vector<Span> intervals;  // (v unused) merged ROI intervals per row
+  std::vector<Span> rowScratch; // intervals of one row before merging
+  std::vector<Span> match, copy, zero;
+};
+
+Scratch &scratch()
+{
+  thread_local Scratch s;
+  return s;
+}
+
+uint8_t *ensurePadded(Scratch &s, std::size_t size)
+{
+  if (s.paddedCapacity < size) {
+    // 64-byte rows for AVX-512; zeroed so that the padding the masked lanes read is initialised.
+    const std::size_t bytes = (size + 63) / 64 * 64;
+    void *p = std::aligned_alloc(64, bytes);
+    if (p == nullptr) {
+      throw vpException(vpException::memoryAllocationError,
+                        "vpSSLMatchingFunction: cannot allocate %zu bytes for the padded image", bytes);
+    }
+    std::memset(p, 0, bytes);
+    s.padded.reset(static_cast<uint8_t *>(p));
+    s.paddedCapacity = size;
+  }
+  return s.padded.get();
+}
+
+/*
+  Columns of one strip: the 2w + 1 rows a strip reads (for the vertical directions) stay within about 24 KB, i.e.
+  in L1, while the strip moves down the image. A multiple of 128 keeps whole blocks of vectors inside a strip.
+*/
+int stripWidth(int window)
+{
+  return std::max(128, 24 * 1024 / (2 * window + 1) / 128 * 128);
+}
+
+// Merged union of the boxes (grown by `grow` pixels on each side, clipped to the image) for every row.
+void mergeRows(Scratch &s, int W, int H, int grow)
+{
+  s.rowFirst.assign(static_cast<std::size_t>(H) + 1, 0);
+  s.intervals.clear();
+  for (int v = 0; v < H; ++v) {
+    s.rowFirst[v] = static_cast<int>(s.intervals.size());
+    s.rowScratch.clear();
+    for (const Box &b : s.boxes) {
+      if (v >= b.v0 - grow && v < b.v1 + grow) {
+        s.rowScratch.push_back({v, std::max(0, b.u0 - grow), std::min(W, b.u1 + grow)});
+      }
+    }
+    std::sort(s.rowScratch.begin(), s.rowScratch.end(), [](const Span &a, const Span &b) { return a.u0 < b.u0; });
+    for (const Span &r : s.rowScratch) {
+      if (s.intervals.size() > static_cast<std::size_t>(s.rowFirst[v]) && r.u0 <= s.intervals.back().u1) {
+        s.intervals.back().u1 = std::max(s.intervals.back().u1, r.u1);
+      } else {
+        s.intervals.push_back(r);
+      }
+    }
+  }
+  s.rowFirst[H] = static_cast<int>(s.intervals.size());
+}
+
+unsigned int threadCount(unsigned int requested)
+{
+  if (requested > 0) {
+    return requested;
+  }
+#ifdef _OPENMP
+  return static_cast<unsigned int>(std::max(1, omp_get_num_procs()));
+#else
+  return std::max(1u, std::thread::hardware_concurrency());
+#endif
+}
+
+/*
+  M inside the boxes of s.boxes (already clipped, non-empty), 0 elsewhere. The pixels each box's matching reads
+  (the box grown by w, clipped) are copied into the padded image first; overlapping boxes are merged row by row
+  so that every pixel is computed once.
+*/
+void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImage<int> &M, Scratch &s)
+{
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  const int w = static_cast<int>(f.getWindow());
+
+  kernel::Params P;
+  P.stride = kernel::paddedStride(W, w);
+  uint8_t *padded = ensurePadded(s, kernel::paddedSize(W, H, w)) + kernel::leftPad(w);
+  P.pixels = padded;
+  P.width = W;
+  P.height = H;
+  P.window = w;
+  P.out = M.bitmap;
+  const std::ptrdiff_t steps[4] = {1, -1, P.stride, -P.stride}; // vpSSLDirection order
+  for (int dir = 0; dir < 4; ++dir) {
+    for (int xi = 0; xi <= w; ++xi) {
+      P.offsets[dir][xi][0] = xi * steps[dir];
+      P.offsets[dir][xi][1] = f.offsetSqrtP(static_cast<unsigned int>(xi)) * steps[dir];
+      P.offsets[dir][xi][2] = f.offsetP(static_cast<unsigned int>(xi)) * steps[dir];
+    }
+  }
+
+  // Pixels to copy: the boxes grown by the window.
+  mergeRows(s, W, H, w);
+  s.copy.assign(s.intervals.begin(), s.intervals.end());
+
+  // Pixels to match, strip by strip (strip-major, so that consecutive spans share their rows in cache), and the
+  // rest of M to clear.
+  mergeRows(s, W, H, 0);
+  s.match.clear();
+  s.zero.clear();
+  const int strip = stripWidth(w);
+  for (int c0 = 0; c0 < W; c0 += strip) {
+    const int c1 = std::min(W, c0 + strip);
+    for (int v = 0; v < H; ++v) {
+      for (int k = s.rowFirst[v]; k < s.rowFirst[v + 1]; ++k) {
+        const int a = std::max(c0, s.intervals[k].u0), b = std::min(c1, s.intervals[k].u1);
+        if (a < b) {
+          s.match.push_back({v, a, b});
+        }
+      }
+    }
+  }
+  for (int v = 0; v < H; ++v) {
+    int u = 0;
+    for (int k = s.rowFirst[v]; k < s.rowFirst[v + 1]; ++k) {
+      if (s.intervals[k].u0 > u) {
+        s.zero.push_back({v, u, s.intervals[k].u0});
+      }
+      u = s.intervals[k].u1;
+    }
+    if (u < W) {
+      s.zero.push_back({v, u, W});
+    }
+  }
+
+  const Span *copy = s.copy.data(), *match = s.match.data(), *zero = s.zero.data();
+  const int nCopy = static_cast<int>(s.copy.size()), nMatch = static_cast<int>(s.match.size()),
+            nZero = static_cast<int>(s.zero.size());
+  const unsigned char *image = I.bitmap;
+  const std::ptrdiff_t stride = P.stride;
+  int32_t *out = M.bitmap;
+#ifdef _OPENMP
+  const int threads = static_cast<int>(std::min<unsigned int>(threadCount(f.getNbThreads()), std::max(nMatch, 1)));
+#endif
+  // Every pixel depends on its own neighbourhood only, so any split gives the same map. Dynamic chunks of a few
+  // rows of a strip keep a thread's rows in its cache and let an idle core take over from a busy one.
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < nCopy; ++i) {
+      std::memcpy(padded + copy[i].v * stride + copy[i].u0,
+                  image + static_cast<std::ptrdiff_t>(copy[i].v) * W + copy[i].u0,
+                  static_cast<std::size_t>(copy[i].u1 - copy[i].u0));
+    }
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < nZero; ++i) {
+      std::fill(out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u0,
+                out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u1, 0);
+    }
+#pragma omp for schedule(dynamic, 16)
+    for (int i = 0; i < nMatch; ++i) {
+      kernel::matchSpan(P, match[i].v, match[i].u0, match[i].u1);
+    }
+  }
+}
+} // namespace
+
+void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, vpImage<int> &M) const
+{
+  M.resize(I.getHeight(), I.getWidth());
+  if (I.getSize() == 0) {
+    return;
+  }
+  Scratch &s = scratch();
+  s.boxes.assign(1, {0, 0, static_cast<int>(I.getWidth()), static_cast<int>(I.getHeight())});
+  run(*this, I, M, s);
+}
+
+void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
+                                    vpImage<int> &M) const
+{
+  M.resize(I.getHeight(), I.getWidth());
+  if (I.getSize() == 0) {
+    return;
+  }
+  const double W = I.getWidth(), H = I.getHeight();
+  Scratch &s = scratch();
+  s.boxes.clear();
+  for (std::size_t k = 0; k < rois.size(); ++k) {
+    const vpRect &r = rois[k];
+    if (!std::isfinite(r.getLeft()) || !std::isfinite(r.getTop()) || !std::isfinite(r.getWidth()) ||
+        !std::isfinite(r.getHeight())) {
+      throw vpException(vpException::badValue,
+                        "vpSSLMatchingFunction::compute: region of interest %zu has a non-finite coordinate", k);
+    }
+    // vpRect spans the pixels left .. getRight() inclusive; clip in double before converting to int.
+    const double u0 = std::ceil(std::max(0., r.getLeft())), v0 = std::ceil(std::max(0., r.getTop()));
+    const double u1 = std::floor(std::min(W - 1., r.getRight())), v1 = std::floor(std::min(H - 1., r.getBottom()));
+    if (u0 <= u1 && v0 <= v1) {
+      s.boxes.push_back(
+          {static_cast<int>(u0), static_cast<int>(v0), static_cast<int>(u1) + 1, static_cast<int>(v1) + 1});
+    }
+  }
+  run(*this, I, M, s);
+}
+
+std::string vpSSLMatchingFunction::getSimdTarget()
+{
+  return vpSSLMatchingKernel::targetName();
+}

@@ -1,0 +1,370 @@
+#include <visp3/ssl/vpSSLSequenceReader.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpXmlParserCamera.h>
+#include <visp3/io/vpImageIo.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+const char *const standardColumns[14] = {"frame",    "t",     "odom_tx", "odom_ty", "odom_tz", "odom_tux", "odom_tuy",
+                                         "odom_tuz", "gt_tx", "gt_ty",   "gt_tz",   "gt_tux",  "gt_tuy",   "gt_tuz"};
+const char *const imageExtensions[] = {"png", "jpg", "jpeg", "pgm", "ppm"};
+
+std::string trim(const std::string &s)
+{
+  size_t b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos)
+    return std::string();
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+// RFC 4180 cells on one line; quotes are only needed for extra columns, but a converter may add them anywhere.
+// Returns false on an unterminated quote.
+bool splitCsv(const std::string &line, std::vector<std::string> &cells)
+{
+  cells.clear();
+  std::string cell;
+  size_t i = 0;
+  while (true) {
+    cell.clear();
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      while (true) {
+        if (i >= line.size())
+          return false;
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            cell += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        cell += line[i++];
+      }
+      size_t comma = line.find(',', i);
+      cell += line.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
+      i = comma;
+    } else {
+      size_t comma = line.find(',', i);
+      cell.assign(line, i, comma == std::string::npos ? std::string::npos : comma - i);
+      i = comma;
+    }
+    cells.push_back(cell);
+    if (i == std::string::npos)
+      return true;
+    ++i;
+  }
+}
+
+// After an error the reader stays failed: the next call repeats the error instead of reading on out of step.
+template <typename Read> bool sticky(std::string &error, Read read)
+{
+  if (!error.empty())
+    throw vpException(vpException::badValue, error);
+  try {
+    return read();
+  } catch (const vpException &e) {
+    error = e.getStringMessage();
+    throw;
+  }
+}
+
+// Locale-independent, whole-cell, finite number; an empty string means "ok".
+std::string parseNumber(const std::string &cell, double &value)
+{
+  std::string s = trim(cell);
+  const char *b = s.data(), *e = s.data() + s.size();
+  if (b != e && *b == '+')
+    ++b;
+  auto r = std::from_chars(b, e, value);
+  if (s.empty() || r.ec != std::errc() || r.ptr != e || !std::isfinite(value))
+    return "not a number: \"" + cell + "\"";
+  return std::string();
+}
+} // namespace
+
+vpSSLSequenceReader::vpSSLSequenceReader()
+    : m_lineNumber(0), m_rowIndex(0), m_ended(true), m_lastTimeValue(0.), m_width(0), m_height(0)
+{
+}
+
+void vpSSLSequenceReader::open(const std::string &folder)
+{
+  close();
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw vpException(vpException::ioError, folder + ": not a sequence folder (missing or not a directory)");
+  m_folder = folder;
+  readCamera();
+  m_info = vpSSLSequenceInfo::load((fs::path(folder) / "sequence.json").string());
+  m_csvPath = (fs::path(folder) / "frames.csv").string();
+  m_csv.open(m_csvPath, std::ios::binary);
+  if (!m_csv)
+    throw vpException(vpException::ioError, m_csvPath + ": missing or unreadable");
+  m_lineNumber = 0;
+  m_rowIndex = 0;
+  m_ended = false;
+  m_imagePath.clear();
+  readHeader();
+}
+
+void vpSSLSequenceReader::close()
+{
+  if (m_csv.is_open())
+    m_csv.close();
+  m_csv.clear();
+  m_ended = true;
+  m_error.clear();
+}
+
+void vpSSLSequenceReader::readCamera()
+{
+  std::string path = (fs::path(m_folder) / "camera.xml").string();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw vpException(vpException::ioError, path + ": missing");
+  // The file holds one projection model for "Camera"; vpXmlParserCamera only finds the one asked for.
+  const vpCameraParameters::vpCameraParametersProjType models[] = {
+      vpCameraParameters::perspectiveProjWithDistortion, vpCameraParameters::perspectiveProjWithoutDistortion};
+  bool found = false;
+  for (auto model : models) {
+    vpXmlParserCamera parser;
+    // vpXmlParserCamera prints "Found camera ..." on std::cout, which would corrupt a tool's JSON output.
+    std::ostringstream sink;
+    std::streambuf *coutBuf = std::cout.rdbuf(sink.rdbuf());
+    int status = vpXmlParserCamera::SEQUENCE_ERROR;
+    try {
+      status = parser.parse(m_cam, path, "Camera", model);
+    } catch (...) {
+      status = vpXmlParserCamera::SEQUENCE_ERROR;
+    }
+    std::cout.rdbuf(coutBuf);
+    if (status == vpXmlParserCamera::SEQUENCE_OK) {
+      m_width = parser.getWidth();
+      m_height = parser.getHeight();
+      found = true;
+      break;
+    }
+  }
+  if (!found) {
+    std::ifstream in(path);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    bool named = false;
+    for (size_t b = text.find("<name>"); b != std::string::npos && !named; b = text.find("<name>", b + 1)) {
+      size_t e = text.find("</name>", b);
+      named = e != std::string::npos && trim(text.substr(b + 6, e - b - 6)) == "Camera";
+    }
+    if (!named)
+      throw vpException(vpException::badValue,
+                        path + ": name: no camera named \"Camera\" (write it with vpXmlParserCamera::save(cam, file, "
+                               "\"Camera\", width, height))");
+    throw vpException(vpException::badValue,
+                      path + ": camera \"Camera\": no readable <model> (type perspectiveProjWithoutDistortion or "
+                             "perspectiveProjWithDistortion with px, py, u0, v0), or the file is not valid XML");
+  }
+  if (!(m_cam.get_px() > 0.) || !(m_cam.get_py() > 0.))
+    throw vpException(vpException::badValue, path + ": camera \"Camera\": px and py must be > 0");
+}
+
+void vpSSLSequenceReader::readHeader()
+{
+  std::string expected;
+  for (const char *c : standardColumns)
+    expected += std::string(expected.empty() ? "" : ",") + c;
+  if (!std::getline(m_csv, m_line))
+    throw vpException(vpException::badValue, m_csvPath + ":1: empty file, expected the header " + expected);
+  m_lineNumber = 1;
+  if (m_line.compare(0, 3, "\xEF\xBB\xBF") == 0) // UTF-8 byte order mark written by spreadsheets
+    m_line.erase(0, 3);
+  if (!m_line.empty() && m_line.back() == '\r')
+    m_line.pop_back();
+  if (!splitCsv(m_line, m_cells))
+    throw vpException(vpException::badValue, m_csvPath + ":1: unterminated quote in the header");
+  for (unsigned int i = 0; i < 14; ++i) {
+    std::string col = std::to_string(i + 1);
+    if (i >= m_cells.size())
+      throw vpException(vpException::badValue, m_csvPath + ":1: column " + col + " \"" + standardColumns[i] +
+                                                   "\": missing (header has " + std::to_string(m_cells.size()) +
+                                                   " columns, expected " + expected + ")");
+    if (trim(m_cells[i]) != standardColumns[i])
+      throw vpException(vpException::badValue, m_csvPath + ":1: column " + col + ": expected \"" + standardColumns[i] +
+                                                   "\", got \"" + m_cells[i] + "\" (the header starts with " +
+                                                   expected + ")");
+  }
+  m_extraColumns.clear();
+  for (size_t i = 14; i < m_cells.size(); ++i) {
+    std::string name = trim(m_cells[i]);
+    std::string col = m_csvPath + ":1: column " + std::to_string(i + 1);
+    if (name.empty())
+      throw vpException(vpException::badValue, col + ": empty column name");
+    for (size_t j = 0; j < i; ++j)
+      if (trim(m_cells[j]) == name)
+        throw vpException(vpException::badValue, col + ": \"" + name + "\" is also column " + std::to_string(j + 1));
+    m_extraColumns.push_back(name);
+  }
+}
+
+std::string vpSSLSequenceReader::where() const
+{
+  return m_csvPath + ":" + std::to_string(m_lineNumber) + ": ";
+}
+
+bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
+{
+  if (!m_csv.is_open())
+    throw vpException(vpException::notInitialized, "vpSSLSequenceReader: call open() before next()");
+  if (m_ended)
+    return false;
+  if (!std::getline(m_csv, m_line)) {
+    m_ended = true;
+    return false;
+  }
+  ++m_lineNumber;
+  if (!m_line.empty() && m_line.back() == '\r')
+    m_line.pop_back();
+  if (m_line.empty()) {
+    // Trailing empty lines end the table; an empty line followed by rows is a hole in it.
+    unsigned int emptyLine = m_lineNumber;
+    while (std::getline(m_csv, m_line)) {
+      ++m_lineNumber;
+      if (!m_line.empty() && m_line != "\r")
+        throw vpException(vpException::badValue, m_csvPath + ":" + std::to_string(emptyLine) +
+                                                     ": empty line inside the table (rows go on at line " +
+                                                     std::to_string(m_lineNumber) + ")");
+    }
+    m_ended = true;
+    return false;
+  }
+  if (!splitCsv(m_line, m_cells))
+    throw vpException(vpException::badValue, where() + "unterminated quote");
+  size_t nColumns = 14 + m_extraColumns.size();
+  auto columnName = [&](size_t i) { return i < 14 ? std::string(standardColumns[i]) : m_extraColumns[i - 14]; };
+  if (m_cells.size() < nColumns)
+    throw vpException(vpException::badValue, where() + columnName(m_cells.size()) + ": missing (row has " +
+                                                 std::to_string(m_cells.size()) + " cells, expected " +
+                                                 std::to_string(nColumns) + ")");
+  if (m_cells.size() > nColumns)
+    throw vpException(vpException::badValue, where() + "cell " + std::to_string(nColumns + 1) +
+                                                 ": no column for it (row has " + std::to_string(m_cells.size()) +
+                                                 " cells, the header " + std::to_string(nColumns) + ")");
+
+  std::string index = trim(m_cells[0]);
+  unsigned long long value = 0;
+  auto r = std::from_chars(index.data(), index.data() + index.size(), value);
+  if (index.empty() || r.ec != std::errc() || r.ptr != index.data() + index.size())
+    throw vpException(vpException::badValue, where() + "frame: not an integer: \"" + m_cells[0] + "\"");
+  if (value != m_rowIndex)
+    throw vpException(vpException::badValue, where() + "frame: " + index + ", expected " + std::to_string(m_rowIndex) +
+                                                 " (frames are numbered from 0 in row order)");
+
+  double t = 0.;
+  std::string error = parseNumber(m_cells[1], t);
+  if (!error.empty())
+    throw vpException(vpException::badValue, where() + "t: " + error);
+  if (m_rowIndex > 0 && !(t > m_lastTimeValue))
+    throw vpException(vpException::badValue,
+                      where() + "t: not increasing (" + trim(m_cells[1]) + " after " + m_lastTime + ")");
+
+  // A pose group is either 6 numbers or 6 empty cells: a partial pose is a broken recording, not "absent".
+  auto readPose = [&](size_t first, vpPoseVector &pose) {
+    size_t nEmpty = 0;
+    for (size_t i = first; i < first + 6; ++i)
+      nEmpty += trim(m_cells[i]).empty() ? 1 : 0;
+    if (nEmpty == 6)
+      return false;
+    for (size_t i = first; i < first + 6; ++i) {
+      if (nEmpty > 0 && trim(m_cells[i]).empty())
+        throw vpException(vpException::badValue, where() + columnName(i) + ": empty, but " +
+                                                     std::to_string(6 - nEmpty) + " other " +
+                                                     columnName(first).substr(0, columnName(first).find('_')) +
+                                                     "_* cells are set (the 6 cells are all numbers or all empty)");
+      std::string err = parseNumber(m_cells[i], pose[static_cast<unsigned int>(i - first)]);
+      if (!err.empty())
+        throw vpException(vpException::badValue, where() + columnName(i) + ": " + err);
+    }
+    return true;
+  };
+  frame.hasOdometry = readPose(2, frame.oMv);
+  frame.hasGroundTruth = readPose(8, frame.cMo);
+  frame.index = m_rowIndex;
+  frame.t = t;
+  frame.extras.clear();
+  for (size_t i = 0; i < m_extraColumns.size(); ++i)
+    frame.extras[m_extraColumns[i]] = m_cells[14 + i];
+
+  char name[32];
+  std::snprintf(name, sizeof(name), "%06u.", m_rowIndex);
+  fs::path images = fs::path(m_folder) / "images";
+  m_imagePath.clear();
+  for (const char *ext : imageExtensions) {
+    fs::path p = images / (name + std::string(ext));
+    std::error_code ec;
+    if (fs::is_regular_file(p, ec)) {
+      m_imagePath = p.string();
+      break;
+    }
+  }
+  if (m_imagePath.empty())
+    throw vpException(vpException::ioError, (images / (name + std::string("png"))).string() +
+                                                ": missing (frames.csv:" + std::to_string(m_lineNumber) +
+                                                "; also looked for .jpg, .jpeg, .pgm, .ppm)");
+  m_lastTime = trim(m_cells[1]);
+  m_lastTimeValue = t;
+  ++m_rowIndex;
+  return true;
+}
+
+template <typename Type> bool vpSSLSequenceReader::nextWithImage(vpSSLSequenceFrame &frame, vpImage<Type> &I)
+{
+  if (!readRow(frame))
+    return false;
+  std::string line = "frames.csv:" + std::to_string(m_lineNumber);
+  try {
+    vpImageIo::read(I, m_imagePath);
+  } catch (const vpException &e) {
+    throw vpException(vpException::ioError,
+                      m_imagePath + ": cannot read the image (" + line + "): " + e.getStringMessage());
+  } catch (const std::exception &e) { // the OpenCV backend throws cv::Exception
+    throw vpException(vpException::ioError, m_imagePath + ": cannot read the image (" + line + "): " + e.what());
+  }
+  if (I.getWidth() == 0 || I.getHeight() == 0)
+    throw vpException(vpException::ioError, m_imagePath + ": empty image (" + line + ")");
+  // All images share one size: camera.xml's when it gives one, else the first image's.
+  if (m_width == 0 || m_height == 0) {
+    m_width = I.getWidth();
+    m_height = I.getHeight();
+  } else if (I.getWidth() != m_width || I.getHeight() != m_height) {
+    throw vpException(vpException::badValue, m_imagePath + ": " + std::to_string(I.getWidth()) + "x" +
+                                                 std::to_string(I.getHeight()) + " pixels, expected " +
+                                                 std::to_string(m_width) + "x" + std::to_string(m_height) +
+                                                 " as in camera.xml or the first image (" + line + ")");
+  }
+  return true;
+}
+
+bool vpSSLSequenceReader::next(vpSSLSequenceFrame &frame, vpImage<unsigned char> &I)
+{
+  return sticky(m_error, [&]() { return nextWithImage(frame, I); });
+}
+
+bool vpSSLSequenceReader::next(vpSSLSequenceFrame &frame, vpImage<vpRGBa> &I)
+{
+  return sticky(m_error, [&]() { return nextWithImage(frame, I); });
+}
+
+bool vpSSLSequenceReader::next(vpSSLSequenceFrame &frame)
+{
+  return sticky(m_error, [&]() { return readRow(frame); });
+}

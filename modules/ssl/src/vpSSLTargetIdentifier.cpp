@@ -1,0 +1,199 @@
+#include <visp3/ssl/vpSSLTargetIdentifier.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <visp3/core/vpException.h>
+
+namespace
+{
+// Affine map of the unit circle onto a landmark's outer ellipse: undoing it rectifies the target plane
+// locally, up to a rotation, a scale and without changing its orientation (its determinant is > 0).
+struct Ellipse2x2
+{
+  double m[2][2];
+  double inv[2][2];
+};
+
+Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
+{
+  const double a = l.radius, b = l.minorRadius > 0. ? l.minorRadius : l.radius;
+  const double c = std::cos(l.theta), s = std::sin(l.theta);
+  Ellipse2x2 e;
+  e.m[0][0] = a * c * c + b * s * s;
+  e.m[0][1] = (a - b) * c * s;
+  e.m[1][0] = e.m[0][1];
+  e.m[1][1] = a * s * s + b * c * c;
+  const double ia = 1. / a, ib = 1. / b;
+  e.inv[0][0] = ia * c * c + ib * s * s;
+  e.inv[0][1] = (ia - ib) * c * s;
+  e.inv[1][0] = e.inv[0][1];
+  e.inv[1][1] = ia * s * s + ib * c * c;
+  return e;
+}
+
+struct Hypothesis
+{
+  std::vector<int> detection;
+  unsigned int nbMatched = 0;
+  double residual = 0.;
+};
+} // namespace
+
+vpSSLTargetIdentifier::vpSSLTargetIdentifier(const vpSSLTarget &target)
+  : m_target(target), m_radiusTol(0.35), m_distanceTol(0.25), m_big(-1)
+{
+  if (m_target.size() == 0) {
+    throw vpException(vpException::badValue, "vpSSLTargetIdentifier: target \"%s\" has no landmark",
+                      m_target.getName().c_str());
+  }
+  double biggest = -1.;
+  for (size_t k = 0; k < m_target.size(); ++k) {
+    if (m_target.getLandmark(k).radius > biggest) {
+      biggest = m_target.getLandmark(k).radius;
+      m_big = static_cast<int>(k);
+    }
+  }
+}
+
+vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks) const
+{
+  const size_t K = m_target.size(), N = landmarks.size();
+  vpSSLTargetMatch result;
+  result.detection.assign(K, -1);
+  if (N == 0) {
+    return result;
+  }
+  std::vector<Ellipse2x2> maps(N);
+  for (size_t i = 0; i < N; ++i) {
+    maps[i] = ellipseMap(landmarks[i]);
+  }
+  const std::vector<vpSSLTargetLandmark> &model = m_target.getLandmarks();
+
+  std::vector<Hypothesis> hypotheses;
+  for (size_t i = 0; i < N; ++i) {
+    for (size_t k = 0; k < K; ++k) {
+      for (size_t j = 0; j < N; ++j) {
+        if (j == i) {
+          continue;
+        }
+        for (size_t l = 0; l < K; ++l) {
+          if (l == k) {
+            continue;
+          }
+          // The anchor i is the larger of the two in the model, so its ellipse rectifies best.
+          if (model[k].radius < model[l].radius) {
+            continue;
+          }
+          const double ratio = (landmarks[j].radius / landmarks[i].radius) / (model[l].radius / model[k].radius);
+          if (ratio < 1. - m_radiusTol || ratio > 1. / (1. - m_radiusTol)) {
+            continue;
+          }
+          // Offset of j from i, rectified and in metres of the model.
+          const double du = landmarks[j].u - landmarks[i].u, dv = landmarks[j].v - landmarks[i].v;
+          const double wx = model[k].radius * (maps[i].inv[0][0] * du + maps[i].inv[0][1] * dv);
+          const double wy = model[k].radius * (maps[i].inv[1][0] * du + maps[i].inv[1][1] * dv);
+          const double mx = model[l].x - model[k].x, my = model[l].y - model[k].y;
+          const double dw = std::hypot(wx, wy), dm = std::hypot(mx, my);
+          if (dm <= 0. || std::fabs(dw / dm - 1.) > m_distanceTol) {
+            continue;
+          }
+          // Rotation and scale taking model offsets to rectified image offsets.
+          const double phi = std::atan2(wy, wx) - std::atan2(my, mx);
+          const double scale = dw / dm / model[k].radius; // rectified radii per metre
+          const double cphi = std::cos(phi) * scale, sphi = std::sin(phi) * scale;
+          Hypothesis h;
+          h.detection.assign(K, -1);
+          h.detection[k] = static_cast<int>(i);
+          h.detection[l] = static_cast<int>(j);
+          h.nbMatched = 2;
+          double residual = std::fabs(dw / dm - 1.);
+          for (size_t m = 0; m < K; ++m) {
+            if (m == k || m == l) {
+              continue;
+            }
+            const double ox = model[m].x - model[k].x, oy = model[m].y - model[k].y;
+            const double rx = cphi * ox - sphi * oy, ry = sphi * ox + cphi * oy;
+            const double pu = landmarks[i].u + maps[i].m[0][0] * rx + maps[i].m[0][1] * ry;
+            const double pv = landmarks[i].v + maps[i].m[1][0] * rx + maps[i].m[1][1] * ry;
+            const double reach = std::hypot(pu - landmarks[i].u, pv - landmarks[i].v);
+            const double expectedRadius = landmarks[i].radius * model[m].radius / model[k].radius;
+            int bestJ = -1;
+            double bestE = m_distanceTol;
+            for (size_t jj = 0; jj < N; ++jj) {
+              if (jj == i || jj == j) {
+                continue;
+              }
+              const double rr = landmarks[jj].radius / expectedRadius;
+              if (rr < 1. - m_radiusTol || rr > 1. / (1. - m_radiusTol)) {
+                continue;
+              }
+              const double e = std::hypot(landmarks[jj].u - pu, landmarks[jj].v - pv) / std::max(reach, 1.);
+              if (e < bestE) {
+                bestE = e;
+                bestJ = static_cast<int>(jj);
+              }
+            }
+            if (bestJ >= 0) {
+              h.detection[m] = bestJ;
+              ++h.nbMatched;
+              residual += bestE;
+            }
+          }
+          h.residual = residual / (h.nbMatched - 1);
+          hypotheses.push_back(h);
+        }
+      }
+    }
+  }
+
+  unsigned int bestCount = 0;
+  for (const Hypothesis &h : hypotheses) {
+    bestCount = std::max(bestCount, h.nbMatched);
+  }
+  if (bestCount >= 2) {
+    // Keep only the labels that every equally complete hypothesis agrees on: two landmarks of a symmetric
+    // target cannot be told apart (paper Sec. 3.2, case 2).
+    const Hypothesis *best = nullptr;
+    for (const Hypothesis &h : hypotheses) {
+      if (h.nbMatched == bestCount && (best == nullptr || h.residual < best->residual)) {
+        best = &h;
+      }
+    }
+    std::vector<int> agreed = best->detection;
+    const double residual = best->residual;
+    for (const Hypothesis &hh : hypotheses) {
+      const Hypothesis *h = &hh;
+      if (h->nbMatched != bestCount || h->residual > residual + 0.1) {
+        continue;
+      }
+      for (size_t k = 0; k < K; ++k) {
+        if (agreed[k] != h->detection[k]) {
+          agreed[k] = -1;
+        }
+      }
+    }
+    unsigned int n = 0;
+    for (size_t k = 0; k < K; ++k) {
+      n += agreed[k] >= 0 ? 1 : 0;
+    }
+    if (agreed[m_big] >= 0 && n > 0) {
+      result.found = true;
+      result.detection = agreed;
+      result.nbMatched = n;
+      result.residual = residual;
+      return result;
+    }
+  }
+  // Case 1 (and case 2 when the labels stay ambiguous): the biggest landmark seen stands for the big one.
+  size_t biggest = 0;
+  for (size_t i = 1; i < N; ++i) {
+    if (landmarks[i].radius > landmarks[biggest].radius) {
+      biggest = i;
+    }
+  }
+  result.found = true;
+  result.nbMatched = 1;
+  result.detection[m_big] = static_cast<int>(biggest);
+  return result;
+}

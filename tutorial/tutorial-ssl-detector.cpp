@@ -1,0 +1,333 @@
+//! \example tutorial-ssl-detector.cpp
+//! Detects circular self-similar landmarks and the ssl3-a3 target in an image or an image sequence.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <visp3/core/vpImageConvert.h>
+#include <visp3/core/vpImageDraw.h>
+#include <visp3/core/vpIoTools.h>
+#include <visp3/core/vpPixelMeterConversion.h>
+#include <visp3/core/vpXmlParserCamera.h>
+#include <visp3/gui/vpDisplayX.h>
+#include <visp3/io/vpImageIo.h>
+#include <visp3/io/vpVideoReader.h>
+#include <visp3/ssl/vpSSLDetector.h>
+
+namespace
+{
+const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [options]
+
+Detects circular self-similar landmarks (SSL) and identifies the target in each image.
+
+Options:
+  --input PATH        An image file, or a numbered sequence as a vpVideoReader pattern
+                      (e.g. images/%06d.png). Required.
+  --camera FILE       Camera parameters (ViSP XML, vpXmlParserCamera). Enables range_m
+                      (paper Eq. 6) and normalised feature coordinates.
+  --camera-name NAME  Camera name inside the XML file (default: Camera).
+  --target NAME|FILE  Built-in target name or target file (default: ssl3-a3).
+  --json              Print one JSON object per image on standard output (JSON Lines,
+                      ../shared/spec/detect-json.md); everything else goes to stderr.
+  --output DIR        Write annotated images DIR/<image name>.png (default when no window
+                      is shown: ssl-detections).
+  --display           Show the detections in a window (needs an X display).
+  --window W          Window length of the matching function, in [2, 128] (default 40).
+  --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.12).
+  --no-normalize      Switch brightness normalisation off (on by default, paper Fig. 13).
+  --threads N         Worker threads for the matching function (default 0: all cores).
+  --max-frames N      Stop after N frames of a sequence (default: all).
+  --help              This help.
+
+Exit status: 0 when every image was read, 1 when an image could not be read (the others
+are still processed), 2 on a bad option, camera file or target file.
+)";
+
+std::string jsonString(const std::string &s)
+{
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+    case '"':
+      out += "\\\"";
+      break;
+    case '\\':
+      out += "\\\\";
+      break;
+    case '\n':
+      out += "\\n";
+      break;
+    default:
+      if (static_cast<unsigned char>(c) < 0x20) {
+        char buf[8];
+        std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+        out += buf;
+      } else {
+        out += c;
+      }
+    }
+  }
+  return out + "\"";
+}
+
+std::string num(double x, int digits)
+{
+  if (!std::isfinite(x)) {
+    return "null";
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
+  return buf;
+}
+
+// The detect-json.md record of one image.
+std::string toJson(const std::string &name, const vpImage<unsigned char> &I, const vpSSLDetector &detector,
+                   const vpCameraParameters *cam)
+{
+  std::ostringstream os;
+  os << "{\"image\": " << jsonString(name) << ", \"width\": " << I.getWidth() << ", \"height\": " << I.getHeight()
+     << ", \"time_ms\": " << num(detector.getTimes().total, 3) << ", \"landmarks\": [";
+  const std::vector<vpSSLLandmark> &landmarks = detector.getLandmarks();
+  for (size_t i = 0; i < landmarks.size(); ++i) {
+    const vpSSLLandmark &l = landmarks[i];
+    os << (i ? ", " : "") << "{\"u\": " << num(l.u, 2) << ", \"v\": " << num(l.v, 2)
+       << ", \"radius_px\": " << num(l.radius, 2) << ", \"score\": " << num(l.score, 3) << "}";
+  }
+  os << "], \"target\": ";
+  const vpSSLTargetMatch &match = detector.getTargetMatch();
+  if (!match.found) {
+    os << "{\"found\": false, \"n_landmarks\": 0}}";
+    return os.str();
+  }
+  const vpSSLTarget &target = detector.getTarget();
+  os << "{\"found\": true, \"n_landmarks\": " << match.nbMatched << ", \"landmarks\": {";
+  bool first = true;
+  double sx = 0., sy = 0., sz = 0.;
+  for (size_t k = 0; k < target.size(); ++k) {
+    const vpSSLLandmark *l = detector.getMatchedLandmark(k);
+    if (l == nullptr) {
+      continue;
+    }
+    os << (first ? "" : ", ") << jsonString(target.getLandmark(k).name) << ": [" << num(l->u, 2) << ", "
+       << num(l->v, 2) << "]";
+    first = false;
+    if (cam != nullptr) {
+      // Eq. 6 gives each landmark's depth; with the bearing of its centre, its position.
+      double x, y;
+      vpPixelMeterConversion::convertPoint(*cam, l->u, l->v, x, y);
+      const double Z = vpSSLDetector::range(*l, target.getLandmark(k).radius, *cam);
+      sx += x * Z;
+      sy += y * Z;
+      sz += Z;
+    }
+  }
+  os << "}, \"cMo\": null, \"range_m\": ";
+  if (cam != nullptr) {
+    // Distance to the centroid of the matched landmarks: the target origin when all three are seen.
+    const double n = match.nbMatched;
+    os << num(std::sqrt(sx * sx + sy * sy + sz * sz) / n, 3);
+  } else {
+    os << "null";
+  }
+  os << "}}";
+  return os.str();
+}
+
+void annotate(const vpImage<unsigned char> &I, vpSSLDetector &detector, vpImage<vpRGBa> &out)
+{
+  vpImageConvert::convert(I, out);
+  for (size_t i = 0; i < detector.getNbObjects(); ++i) {
+    const bool matched = detector.getMessage(i) != "ssl";
+    const vpColor color = matched ? vpColor::green : vpColor::orange;
+    vpImageDraw::drawPolygon(out, detector.getPolygon(i), color, 2, true);
+    const vpSSLLandmark &l = detector.getLandmarks()[i];
+    vpImageDraw::drawCross(out, l.getCenter(), 10, vpColor::red, 1);
+  }
+}
+
+[[noreturn]] void fail(const std::string &msg, int code)
+{
+  std::cerr << "tutorial-ssl-detector: " << msg << std::endl;
+  std::exit(code);
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  std::string input, cameraFile, cameraName = "Camera", targetName = "ssl3-a3", outputDir;
+  bool json = false, display = false, normalize = true;
+  unsigned int window = 40, threads = 0;
+  double threshold = 0.12;
+  long maxFrames = -1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        fail("option " + a + " needs a value (see --help)", 2);
+      }
+      return argv[++i];
+    };
+    auto number = [&](const std::string &v) {
+      char *end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !std::isfinite(x)) {
+        fail("option " + a + ": not a number: \"" + v + "\"", 2);
+      }
+      return x;
+    };
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      return 0;
+    } else if (a == "--input") {
+      input = value();
+    } else if (a == "--camera") {
+      cameraFile = value();
+    } else if (a == "--camera-name") {
+      cameraName = value();
+    } else if (a == "--target") {
+      targetName = value();
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--output") {
+      outputDir = value();
+    } else if (a == "--display") {
+      display = true;
+    } else if (a == "--window") {
+      window = static_cast<unsigned int>(number(value()));
+    } else if (a == "--threshold") {
+      threshold = number(value());
+    } else if (a == "--no-normalize") {
+      normalize = false;
+    } else if (a == "--threads") {
+      threads = static_cast<unsigned int>(number(value()));
+    } else if (a == "--max-frames") {
+      maxFrames = static_cast<long>(number(value()));
+    } else {
+      fail("unknown option \"" + a + "\" (see --help)", 2);
+    }
+  }
+  if (input.empty()) {
+    fail("--input is required (see --help)", 2);
+  }
+  if (!display && outputDir.empty()) {
+    outputDir = "ssl-detections";
+  }
+
+  vpSSLDetector *detectorPtr = nullptr;
+  vpCameraParameters cam;
+  bool haveCamera = false;
+  try {
+    detectorPtr = new vpSSLDetector(vpSSLTarget::fromName(targetName));
+    detectorPtr->setWindow(window);
+    detectorPtr->setThreshold(threshold);
+    detectorPtr->setBrightnessNormalization(normalize);
+    detectorPtr->setNbThreads(threads);
+    if (!cameraFile.empty()) {
+      if (!vpIoTools::checkFilename(cameraFile)) {
+        fail(cameraFile + ": cannot read camera file", 2);
+      }
+      vpXmlParserCamera parser;
+      if (parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithDistortion) !=
+              vpXmlParserCamera::SEQUENCE_OK &&
+          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithoutDistortion) !=
+              vpXmlParserCamera::SEQUENCE_OK) {
+        fail(cameraFile + ": no camera named \"" + cameraName + "\" with a perspective projection", 2);
+      }
+      if (!(cam.get_px() > 0. && cam.get_py() > 0.)) {
+        fail(cameraFile + ": camera \"" + cameraName + "\": px and py must be > 0", 2);
+      }
+      haveCamera = true;
+    }
+  } catch (const vpException &e) {
+    fail(e.getStringMessage(), 2);
+  }
+  vpSSLDetector &detector = *detectorPtr;
+  if (!outputDir.empty()) {
+    vpIoTools::makeDirectory(outputDir);
+  }
+
+  const bool isSequence = input.find('%') != std::string::npos;
+  vpVideoReader reader;
+  vpImage<unsigned char> I;
+  vpImage<vpRGBa> annotated;
+  vpDisplay *window_ = nullptr;
+  int status = 0;
+  long frame = 0, nbFound = 0;
+  if (isSequence) {
+    try {
+      reader.setFileName(input);
+      reader.open(I);
+    } catch (const vpException &e) {
+      fail(input + ": cannot open sequence: " + e.getStringMessage(), 1);
+    }
+  }
+  for (bool done = false; !done; ++frame) {
+    std::string name;
+    if (isSequence) {
+      if (frame > 0) {
+        if (reader.end() || (maxFrames >= 0 && frame >= maxFrames)) {
+          break;
+        }
+        reader.acquire(I);
+      }
+      name = vpIoTools::getName(reader.getFrameName());
+    } else {
+      done = true;
+      name = vpIoTools::getName(input);
+      try {
+        vpImageIo::read(I, input);
+      } catch (const vpException &e) {
+        std::string why = "cannot read image";
+        std::cerr << "tutorial-ssl-detector: " << input << ": " << why << std::endl;
+        if (json) {
+          std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(why) << "}" << std::endl;
+        }
+        status = 1;
+        break;
+      }
+    }
+    try {
+      detector.detect(I);
+    } catch (const vpException &e) {
+      std::cerr << "tutorial-ssl-detector: " << name << ": " << e.getStringMessage() << std::endl;
+      if (json) {
+        std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(e.getStringMessage())
+                  << "}" << std::endl;
+      }
+      status = 1;
+      continue;
+    }
+    nbFound += detector.getTargetMatch().found ? 1 : 0;
+    if (json) {
+      std::cout << toJson(name, I, detector, haveCamera ? &cam : nullptr) << std::endl;
+    }
+    annotate(I, detector, annotated);
+    if (display) {
+      if (window_ == nullptr) {
+        window_ = new vpDisplayX(annotated, vpDisplay::SCALE_AUTO);
+        vpDisplay::setTitle(annotated, "tutorial-ssl-detector");
+      }
+      vpDisplay::display(annotated);
+      vpDisplay::flush(annotated);
+    }
+    if (!outputDir.empty()) {
+      const std::string base = name.substr(0, name.find_last_of('.'));
+      vpImageIo::write(annotated, outputDir + "/" + base + ".png");
+    }
+    if (!json) {
+      std::cerr << name << ": " << detector.getLandmarks().size() << " landmark(s), target "
+                << (detector.getTargetMatch().found ? "found (" + std::to_string(detector.getTargetMatch().nbMatched) +
+                                                          " landmarks)"
+                                                    : std::string("not found"))
+                << ", " << num(detector.getTimes().total, 2) << " ms" << std::endl;
+    }
+  }
+  std::cerr << "tutorial-ssl-detector: " << frame << " image(s), target found in " << nbFound
+            << (outputDir.empty() ? "" : ", annotated images in " + outputDir + "/") << std::endl;
+  delete window_;
+  delete detectorPtr;
+  return status;
+}
