@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <new>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -33,6 +34,25 @@ void *operator new(std::size_t size)
     return p;
   }
   throw std::bad_alloc();
+}
+void *operator new(std::size_t size, std::align_val_t align)
+{
+  if (g_countNew) {
+    ++g_newCalls;
+  }
+  const std::size_t a = static_cast<std::size_t>(align);
+  if (void *p = std::aligned_alloc(a, (size + a - 1) / a * a)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void *p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void *p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
 }
 void operator delete(void *p) noexcept
 {
@@ -143,26 +163,51 @@ TEST(MatchingFast, equalsReferenceOnNoiseSparseAndRingImages)
 
 TEST(MatchingFast, equalsReferenceForEveryWindowLength)
 {
-  // A wide and a tall image per window: both horizontal zones and both vertical zones, and the pixels valid in
-  // one direction only. The sizes grow with w, so the reference stays cheap (its invalid directions cost nothing).
+  // Per window: a wide image (only the horizontal directions, both borders and the middle where they meet) and
+  // a tall one (only the vertical ones); sizes grow with w so that each has valid pixels, and the reference stays
+  // cheap. A few windows also get an image where all four directions overlap.
   vpSSLMatchingFunction f(2, 0.5);
   for (unsigned int w = 2; w <= 128; ++w) {
     f.setWindow(w);
-    const unsigned int a = 2 * w + 1 + w % 3, b = w + 2 + w % 5;
+    const unsigned int a = 2 * w + 1 + w % 3, b = 5 + w % 4;
     EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Noise, a, b, 0.5, w)));
     EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Rings, b, a, 0.5, w + 1000)));
+  }
+  for (unsigned int w : {2u, 3u, 16u, 33u, 64u, 128u}) {
+    f.setWindow(w);
+    EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Sparse, 2 * w + 3, w < 64 ? 2 * w + 5 : w + 9, 0.5, w)));
   }
   for (double p : {0.3, 0.7}) {
     f.setP(p);
     for (unsigned int w : {3u, 17u, 64u, 127u, 128u}) {
       f.setWindow(w);
-      EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Sparse, 2 * w + 3, w + 4, p, w)));
+      EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Noise, 2 * w + 3, 7, p, w)));
+      EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Sparse, 6, 2 * w + 2, p, w)));
     }
   }
 }
 
 TEST(MatchingFast, everySimdTargetCompiledInGivesTheSameMap)
 {
+  // The reference maps once, then every target the CPU supports (the scalar fallback included) against them.
+  struct Case
+  {
+    vpSSLMatchingFunction f;
+    vpImage<unsigned char> I;
+    vpImage<int> ref;
+  };
+  std::vector<Case> cases;
+  long seed = 100;
+  for (unsigned int window : {2u, 9u, 40u}) {
+    const unsigned int sizes[][2] = {{1, 1}, {5, 3}, {2 * window, 9}, {2 * window + 1, 2 * window + 2}, {161, 97}};
+    for (const auto &sz : sizes) {
+      for (Kind kind : kKinds) {
+        Case c{vpSSLMatchingFunction(window, 0.5), makeImage(kind, sz[0], sz[1], 0.5, seed++), vpImage<int>()};
+        c.f.computeReference(c.I, c.ref);
+        cases.push_back(c);
+      }
+    }
+  }
   const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
   ASSERT_FALSE(targets.empty());
   bool scalarSeen = false;
@@ -170,9 +215,12 @@ TEST(MatchingFast, everySimdTargetCompiledInGivesTheSameMap)
     hwy::SetSupportedTargetsForTest(t);
     EXPECT_EQ(vpSSLMatchingFunction::getSimdTarget(), hwy::TargetName(t));
     scalarSeen = scalarSeen || t == HWY_SCALAR || t == HWY_EMU128;
-    checkSizesAndPatterns(9, 0.5);
-    vpSSLMatchingFunction f(40, 0.5);
-    EXPECT_TRUE(fastEqualsReference(f, makeImage(Kind::Rings, 161, 97, 0.5, 7)));
+    for (const Case &c : cases) {
+      vpImage<int> M;
+      c.f.compute(c.I, M);
+      EXPECT_TRUE(sameMap(c.ref, M)) << hwy::TargetName(t) << ", " << c.I.getWidth() << "x" << c.I.getHeight() << ", w "
+                                     << c.f.getWindow();
+    }
   }
   hwy::SetSupportedTargetsForTest(0);
   EXPECT_TRUE(scalarSeen) << "the plain fallback target was not compiled in";
@@ -182,7 +230,8 @@ TEST(MatchingFast, anyThreadCountGivesTheSameMap)
 {
   for (unsigned int window : {8u, 40u}) {
     vpSSLMatchingFunction f(window, 0.5);
-    const vpImage<unsigned char> I = makeImage(Kind::Rings, 203, 157, 0.5, 3);
+    // Large enough for the work to be split (small images run on the calling thread only).
+    const vpImage<unsigned char> I = makeImage(Kind::Rings, 323, 241, 0.5, 3);
     vpImage<int> ref;
     f.computeReference(I, ref);
     for (unsigned int n : {0u, 1u, 2u, 3u, 8u}) {
@@ -192,6 +241,31 @@ TEST(MatchingFast, anyThreadCountGivesTheSameMap)
       EXPECT_TRUE(sameMap(ref, M)) << n << " threads, w " << window;
     }
   }
+}
+
+TEST(MatchingFast, concurrentCallersGetTheSameMap)
+{
+  // Two threads share one matching function (its methods are const): each must get its own scratch buffers, and
+  // the one that finds the worker pool busy runs alone.
+  vpSSLMatchingFunction f(40, 0.5);
+  f.setNbThreads(2);
+  const vpImage<unsigned char> I1 = makeImage(Kind::Noise, 300, 200, 0.5, 21),
+                               I2 = makeImage(Kind::Rings, 250, 260, 0.5, 22);
+  vpImage<int> ref1, ref2;
+  f.computeReference(I1, ref1);
+  f.computeReference(I2, ref2);
+  std::atomic<int> wrong{0};
+  auto worker = [&](const vpImage<unsigned char> &I, const vpImage<int> &ref) {
+    vpImage<int> M;
+    for (int k = 0; k < 20; ++k) {
+      f.compute(I, M);
+      wrong += !sameMap(ref, M);
+    }
+  };
+  std::thread t1(worker, std::cref(I1), std::cref(ref1)), t2(worker, std::cref(I2), std::cref(ref2));
+  t1.join();
+  t2.join();
+  EXPECT_EQ(wrong.load(), 0);
 }
 
 TEST(MatchingFast, reusedBuffersFollowSizeAndWindowChanges)

@@ -17,8 +17,7 @@
 #include <visp3/io/vpVideoReader.h>
 #include <visp3/ssl/vpSSLDetector.h>
 
-namespace
-{
+namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [options]
 
 Detects circular self-similar landmarks (SSL) and identifies the target in each image.
@@ -111,8 +110,8 @@ std::string toJson(const std::string &name, const vpImage<unsigned char> &I, con
     if (l == nullptr) {
       continue;
     }
-    os << (first ? "" : ", ") << jsonString(target.getLandmark(k).name) << ": [" << num(l->u, 2) << ", "
-       << num(l->v, 2) << "]";
+    os << (first ? "" : ", ") << jsonString(target.getLandmark(k).name) << ": [" << num(l->u, 2) << ", " << num(l->v, 2)
+       << "]";
     first = false;
     if (cam != nullptr) {
       // Eq. 6 gives each landmark's depth; with the bearing of its centre, its position.
@@ -294,8 +293,8 @@ int main(int argc, char **argv)
     } catch (const vpException &e) {
       std::cerr << "tutorial-ssl-detector: " << name << ": " << e.getStringMessage() << std::endl;
       if (json) {
-        std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(e.getStringMessage())
-                  << "}" << std::endl;
+        std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(e.getStringMessage()) << "}"
+                  << std::endl;
       }
       status = 1;
       continue;
@@ -319,9 +318,9 @@ int main(int argc, char **argv)
     }
     if (!json) {
       std::cerr << name << ": " << detector.getLandmarks().size() << " landmark(s), target "
-                << (detector.getTargetMatch().found ? "found (" + std::to_string(detector.getTargetMatch().nbMatched) +
-                                                          " landmarks)"
-                                                    : std::string("not found"))
+                << (detector.getTargetMatch().found
+                        ? "found (" + std::to_string(detector.getTargetMatch().nbMatched) + " landmarks)"
+                        : std::string("not found"))
                 << ", " << num(detector.getTimes().total, 2) << " ms" << std::endl;
     }
   }

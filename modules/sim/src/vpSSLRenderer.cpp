@@ -4,6 +4,7 @@
 */
 #include <visp3/ssl/vpSSLRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -21,6 +22,46 @@ const double kParallelEps = 1e-12;
 // Rings narrower than this fraction of the outer radius are left to vpSSLPattern's own evaluation.
 const double kSmallestRing = 1e-8;
 
+// Refractive index of sea water: water-to-air rays beyond asin(1 / 1.333) = 48.6 degrees from the normal are
+// totally reflected.
+const double kWaterIndex = 1.333;
+
+// The sky seen from below through Snell's window, as a reflectance: as bright as white paper under the
+// same light (it is brighter still in reality, but would only saturate the 8-bit image).
+const double kSkyRadiance = 1.;
+
+// Unpolarised Fresnel reflectance of the water-to-air interface for a ray at cos(incidence) = cosI.
+double fresnelWaterToAir(double cosI)
+{
+  const double sinT2 = kWaterIndex * kWaterIndex * (1. - cosI * cosI);
+  if (sinT2 >= 1.) {
+    return 1.;
+  }
+  const double cosT = std::sqrt(1. - sinT2);
+  const double rs = (kWaterIndex * cosI - cosT) / (kWaterIndex * cosI + cosT);
+  const double rp = (cosI - kWaterIndex * cosT) / (cosI + kWaterIndex * cosT);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// Index i of an endless texture of n texels repeated by mirroring (..., 1, 0, 0, 1, ..., n-1, n-1, ...).
+int mirrorIndex(long i, int n)
+{
+  if (i >= 0 && i < n) {
+    return static_cast<int>(i);
+  }
+  if (i >= n && i < 2L * n) {
+    return static_cast<int>(2L * n - 1 - i);
+  }
+  if (i < 0 && i >= -n) {
+    return static_cast<int>(-1 - i);
+  }
+  long m = i % (2L * n);
+  if (m < 0) {
+    m += 2L * n;
+  }
+  return static_cast<int>(m < n ? m : 2L * n - 1 - m);
+}
+
 // Sub-pixel offset from the pixel centre: the n x n grid that tiles the pixel's unit square.
 inline double subOffset(unsigned int i, unsigned int n)
 {
@@ -30,7 +71,8 @@ inline double subOffset(unsigned int i, unsigned int n)
 
 vpSSLRenderer::vpSSLRenderer(const vpCameraParameters &cam, unsigned int width, unsigned int height)
     : m_cam(cam), m_width(width), m_height(height), m_supersampling(4), m_target(), m_black(0.), m_white(1.),
-      m_background(0.5)
+      m_background(0.5), m_aprilTag(false), m_tagSheet(), m_backdrop(), m_texelSize(0.01), m_oMb(), m_hasSurface(false),
+      m_surface(), m_fovMinX(0.), m_fovMaxX(0.), m_fovMinY(0.), m_fovMaxY(0.)
 {
   if (width == 0 || height == 0) {
     throw vpException(vpException::dimensionError, "vpSSLRenderer: image size %ux%u has no pixel", width, height);
@@ -65,6 +107,60 @@ void vpSSLRenderer::setTarget(const vpSSLTarget &target)
   }
   m_target = target;
   m_discs = discs;
+  m_aprilTag = false;
+}
+
+void vpSSLRenderer::setAprilTagSheet(const vpSSLAprilTagSheet &sheet)
+{
+  m_tagSheet = sheet;
+  m_aprilTag = true;
+}
+
+void vpSSLRenderer::setBackdrop(const vpImage<unsigned char> &texture, double texelSize)
+{
+  if (!(texelSize > 0. && std::isfinite(texelSize))) {
+    throw vpException(vpException::badValue, "vpSSLRenderer: backdrop texel size %g m must be > 0", texelSize);
+  }
+  m_backdrop.clear();
+  m_texelSize = texelSize;
+  if (texture.getSize() == 0) {
+    return;
+  }
+  m_backdrop.push_back(texture);
+  while (m_backdrop.back().getWidth() > 1 || m_backdrop.back().getHeight() > 1) {
+    const vpImage<unsigned char> &fine = m_backdrop.back();
+    const unsigned int w = fine.getWidth(), h = fine.getHeight();
+    vpImage<unsigned char> coarse((h + 1) / 2, (w + 1) / 2);
+    for (unsigned int v = 0; v < coarse.getHeight(); ++v) {
+      for (unsigned int u = 0; u < coarse.getWidth(); ++u) {
+        const unsigned int u1 = std::min(2 * u + 1, w - 1), v1 = std::min(2 * v + 1, h - 1);
+        coarse[v][u] = static_cast<unsigned char>(
+            (fine[2 * v][2 * u] + fine[2 * v][u1] + fine[v1][2 * u] + fine[v1][u1] + 2) / 4);
+      }
+    }
+    m_backdrop.push_back(coarse);
+  }
+}
+
+void vpSSLRenderer::setBackdropPose(const vpHomogeneousMatrix &oMb)
+{
+  m_oMb = oMb;
+}
+
+void vpSSLRenderer::setWaterSurface(const vpPlane &surface)
+{
+  const double A = surface.getA(), B = surface.getB(), C = surface.getC();
+  if (!(A * A + B * B + C * C > 0.) || !std::isfinite(A + B + C + surface.getD())) {
+    throw vpException(vpException::badValue, "vpSSLRenderer: water surface plane (%g, %g, %g, %g) has no normal", A, B,
+                      C, surface.getD());
+  }
+  m_surface = surface;
+  m_hasSurface = true;
+}
+
+void vpSSLRenderer::clearWaterSurface()
+{
+  m_hasSurface = false;
 }
 
 void vpSSLRenderer::setSupersampling(unsigned int n)
@@ -133,6 +229,25 @@ void vpSSLRenderer::updateRayCache()
   m_kdu = m_cam.get_projModel() == vpCameraParameters::perspectiveProjWithDistortion ? m_cam.get_kdu() : 0.;
   m_rayCache.clear();
   m_centralRayCache.clear();
+  m_fovMinX = m_fovMinY = std::numeric_limits<double>::infinity();
+  m_fovMaxX = m_fovMaxY = -std::numeric_limits<double>::infinity();
+  auto extend = [this](double u, double v) {
+    double x = 0., y = 0.;
+    vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
+    m_fovMinX = std::min(m_fovMinX, x);
+    m_fovMaxX = std::max(m_fovMaxX, x);
+    m_fovMinY = std::min(m_fovMinY, y);
+    m_fovMaxY = std::max(m_fovMaxY, y);
+  };
+  const double right = m_width - 0.5, bottom = m_height - 0.5;
+  for (unsigned int u = 0; u <= m_width; ++u) {
+    extend(u - 0.5, -0.5);
+    extend(u - 0.5, bottom);
+  }
+  for (unsigned int v = 0; v <= m_height; ++v) {
+    extend(-0.5, v - 0.5);
+    extend(right, v - 0.5);
+  }
   if (m_cam.get_projModel() != vpCameraParameters::ProjWithKannalaBrandtDistortion) {
     return;
   }
@@ -163,49 +278,201 @@ void vpSSLRenderer::updateRayCache()
   m_centralRayCache.swap(central);
 }
 
+struct vpSSLRenderer::Scene
+{
+  // Everything in the sheet frame, where the sheet is the rectangle of the plane Z = 0.
+  double R[3][3]; // camera orientation: a ray through the normalised point (x, y) has direction R (x, y, 1)
+  double o[3];    // camera centre
+  double halfW, halfH, sheetX, sheetY;
+  bool backdrop;
+  double bo[3], be1[3], be2[3], bn[3]; // backdrop origin, texture axes and normal
+  double subPixelAngle;                // angle between neighbour sub-pixel rays (rad), for the texture's footprint
+  bool surface;
+  double sn[3], sd; // water surface: points X with sn . X = sd; sn is the unit normal towards the air
+};
+
+vpHomogeneousMatrix vpSSLRenderer::sheetPose() const
+{
+  // getSheetToTag() is its own inverse: the pose of the sheet frame in the tag frame too.
+  return m_aprilTag ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();
+}
+
+vpSSLRenderer::Scene vpSSLRenderer::makeScene(const vpHomogeneousMatrix &cMo) const
+{
+  Scene s;
+  const vpHomogeneousMatrix oMs = sheetPose();
+  const vpHomogeneousMatrix sMc = (cMo * oMs).inverse();
+  for (unsigned int r = 0; r < 3; ++r) {
+    for (unsigned int c = 0; c < 3; ++c) {
+      s.R[r][c] = sMc[r][c];
+    }
+    s.o[r] = sMc[r][3];
+  }
+  if (m_aprilTag) {
+    s.halfW = 0.5 * m_tagSheet.getSheetWidth();
+    s.halfH = 0.5 * m_tagSheet.getSheetHeight();
+    s.sheetX = s.sheetY = 0.;
+  } else {
+    s.halfW = 0.5 * m_target.getSheetWidth();
+    s.halfH = 0.5 * m_target.getSheetHeight();
+    s.sheetX = m_target.getSheetCenterX();
+    s.sheetY = m_target.getSheetCenterY();
+  }
+  s.backdrop = !m_backdrop.empty();
+  s.subPixelAngle = 1. / (m_supersampling * std::min(m_cam.get_px(), m_cam.get_py()));
+  const vpHomogeneousMatrix sMb = oMs.inverse() * m_oMb;
+  for (unsigned int r = 0; r < 3; ++r) {
+    s.bo[r] = sMb[r][3];
+    s.be1[r] = sMb[r][0];
+    s.be2[r] = sMb[r][1];
+    s.bn[r] = sMb[r][2];
+  }
+  s.surface = m_hasSurface;
+  if (m_hasSurface) {
+    // A X_o + D = 0 with X_o = oRs X_s + ots: (oRs^T A) X_s + (A . ots + D) = 0.
+    const double A[3] = {m_surface.getA(), m_surface.getB(), m_surface.getC()};
+    const double norm = std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]);
+    double Ds = m_surface.getD();
+    for (unsigned int c = 0; c < 3; ++c) {
+      s.sn[c] = (oMs[0][c] * A[0] + oMs[1][c] * A[1] + oMs[2][c] * A[2]) / norm;
+      Ds += A[c] * oMs[c][3];
+    }
+    s.sd = -Ds / norm;
+  } else {
+    s.sn[0] = s.sn[1] = s.sn[2] = s.sd = 0.;
+  }
+  return s;
+}
+
+double vpSSLRenderer::sheetValue(double X, double Y) const
+{
+  if (m_aprilTag) {
+    const double cell = m_tagSheet.getCellSize();
+    const double col = std::floor(X / cell + 4.), row = std::floor(Y / cell + 4.);
+    if (col >= 0. && col < 8. && row >= 0. && row < 8.) {
+      return m_tagSheet.getCells()[static_cast<size_t>(row) * 8 + static_cast<size_t>(col)] ? m_black : m_white;
+    }
+    return m_white;
+  }
+  for (const Disc &disc : m_discs) {
+    const double ddx = X - disc.x, ddy = Y - disc.y;
+    const double r2 = ddx * ddx + ddy * ddy;
+    if (r2 <= disc.radius2) {
+      const std::vector<double> &bound = disc.ringRadius2;
+      size_t ring = 0;
+      while (ring + 1 < bound.size() && r2 <= bound[ring + 1]) {
+        ++ring;
+      }
+      int s = static_cast<int>(ring % 2);
+      if (ring + 1 == bound.size()) {
+        s = vpSSLPattern::circular(ddx, ddy, disc.radius, disc.p);
+      }
+      return s == 0 ? m_black : m_white;
+    }
+  }
+  return m_white;
+}
+
+double vpSSLRenderer::backdropValue(double a, double b, double footprint) const
+{
+  // Bilinear sampling of the pyramid level whose texels are about the sub-pixel's footprint (floor of its
+  // log2): the pixel's n x n samples then average a texture already smoothed to their spacing.
+  const size_t level = footprint >= 2. * m_texelSize
+                           ? std::min(static_cast<size_t>(std::ilogb(footprint / m_texelSize)), m_backdrop.size() - 1)
+                           : 0;
+  const vpImage<unsigned char> &T = m_backdrop[level];
+  const int w = static_cast<int>(T.getWidth()), h = static_cast<int>(T.getHeight());
+  // Level k's texels are 2^k level-0 texels (up to the rounding of odd sizes, invisible on a backdrop).
+  const double perTexel = std::ldexp(1. / m_texelSize, -static_cast<int>(level));
+  const double tu = a * perTexel + 0.5 * (w - 1), tv = b * perTexel + 0.5 * (h - 1);
+  const double fu = std::floor(tu), fv = std::floor(tv);
+  const int u0 = mirrorIndex(static_cast<long>(fu), w), u1 = mirrorIndex(static_cast<long>(fu) + 1, w);
+  const int v0 = mirrorIndex(static_cast<long>(fv), h), v1 = mirrorIndex(static_cast<long>(fv) + 1, h);
+  const double au = tu - fu, av = tv - fv;
+  const double upper = (1. - au) * T[v0][u0] + au * T[v0][u1];
+  const double lower = (1. - au) * T[v1][u0] + au * T[v1][u1];
+  return ((1. - av) * upper + av * lower) / 255.;
+}
+
+double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3], double background, bool surface,
+                            double path0, double &t) const
+{
+  enum
+  {
+    MISS,
+    SHEET,
+    BACKDROP,
+    SURFACE
+  } what = MISS;
+  double best = std::numeric_limits<double>::infinity();
+  double X = 0., Y = 0., a = 0., b = 0., footprint = 0.;
+  if (std::fabs(d[2]) > kParallelEps) {
+    const double ts = -p[2] / d[2];
+    const double Xs = p[0] + ts * d[0], Ys = p[1] + ts * d[1];
+    if (ts > 0. && std::fabs(Xs - s.sheetX) <= s.halfW && std::fabs(Ys - s.sheetY) <= s.halfH) {
+      what = SHEET;
+      best = ts;
+      X = Xs;
+      Y = Ys;
+    }
+  }
+  if (s.backdrop) {
+    const double den = s.bn[0] * d[0] + s.bn[1] * d[1] + s.bn[2] * d[2];
+    if (std::fabs(den) > kParallelEps) {
+      const double tb = (s.bn[0] * (s.bo[0] - p[0]) + s.bn[1] * (s.bo[1] - p[1]) + s.bn[2] * (s.bo[2] - p[2])) / den;
+      if (tb > 0. && tb < best) {
+        what = BACKDROP;
+        best = tb;
+        const double H[3] = {p[0] + tb * d[0] - s.bo[0], p[1] + tb * d[1] - s.bo[1], p[2] + tb * d[2] - s.bo[2]};
+        a = s.be1[0] * H[0] + s.be1[1] * H[1] + s.be1[2] * H[2];
+        b = s.be2[0] * H[0] + s.be2[1] * H[1] + s.be2[2] * H[2];
+        // Width on the backdrop of the cone between neighbour sub-pixel rays: distance / cos(incidence).
+        const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        footprint = (path0 + tb) * d2 * s.subPixelAngle / std::fabs(den);
+      }
+    }
+  }
+  double dn = 0.;
+  if (surface && s.surface) {
+    dn = s.sn[0] * d[0] + s.sn[1] * d[1] + s.sn[2] * d[2];
+    if (dn > kParallelEps) {
+      const double tw = (s.sd - (s.sn[0] * p[0] + s.sn[1] * p[1] + s.sn[2] * p[2])) / dn;
+      if (tw > 0. && tw < best) {
+        what = SURFACE;
+        best = tw;
+      }
+    }
+  }
+  t = best;
+  switch (what) {
+  case SHEET:
+    // Z points into the sheet: a ray from Z > 0 comes from behind and sees the blank back of the paper.
+    return p[2] < 0. ? sheetValue(X, Y) : m_white;
+  case BACKDROP:
+    return backdropValue(a, b, footprint);
+  case SURFACE: {
+    const double q[3] = {p[0] + best * d[0], p[1] + best * d[1], p[2] + best * d[2]};
+    const double r[3] = {d[0] - 2. * dn * s.sn[0], d[1] - 2. * dn * s.sn[1], d[2] - 2. * dn * s.sn[2]};
+    const double reflectance = fresnelWaterToAir(dn / std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    double t2 = 0.;
+    const double reflected = shade(s, q, r, background, false, path0 + best, t2);
+    // The reflected path dominates what the pixel sees unless the sky does (inside Snell's window).
+    t = reflectance >= 0.5 ? best + t2 : best;
+    return reflectance * reflected + (1. - reflectance) * kSkyRadiance;
+  }
+  case MISS:
+  default:
+    return background;
+  }
+}
+
 void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectance, float *range,
                                unsigned char *grey) const
 {
-  // Solve in the target frame: the plane is Z = 0 there, the camera centre is o and a ray through the
-  // normalised point (x, y) has direction oRc (x, y, 1).
-  const vpHomogeneousMatrix oMc = cMo.inverse();
-  double R[3][3], o[3];
-  for (unsigned int r = 0; r < 3; ++r) {
-    for (unsigned int c = 0; c < 3; ++c) {
-      R[r][c] = oMc[r][c];
-    }
-    o[r] = oMc[r][3];
-  }
-  // Z points into the sheet: a camera at o_z > 0 is behind it and sees the blank back of the paper.
-  const bool frontSide = o[2] < 0.;
-  const double halfW = 0.5 * m_target.getSheetWidth(), halfH = 0.5 * m_target.getSheetHeight();
-  const double sheetX = m_target.getSheetCenterX(), sheetY = m_target.getSheetCenterY();
+  const Scene scene = makeScene(cMo);
   const unsigned int n = m_supersampling;
   const double invSamples = 1. / (n * n);
   const bool hasBackgroundImage = m_backgroundImage.getSize() != 0;
-  const Disc *discs = m_discs.data();
-  const size_t nbDiscs = m_discs.size();
-
-  // Ray parameter t of the hit with the sheet (t > 0, on the sheet), or a negative value on a miss.
-  auto hit = [&](double x, double y, double &X, double &Y) -> double {
-    const double dx = R[0][0] * x + R[0][1] * y + R[0][2];
-    const double dy = R[1][0] * x + R[1][1] * y + R[1][2];
-    const double dz = R[2][0] * x + R[2][1] * y + R[2][2];
-    if (!(std::fabs(dz) > kParallelEps)) {
-      return -1.;
-    }
-    const double t = -o[2] / dz;
-    if (!(t > 0.)) {
-      return -1.;
-    }
-    X = o[0] + t * dx;
-    Y = o[1] + t * dy;
-    if (!(std::fabs(X - sheetX) <= halfW && std::fabs(Y - sheetY) <= halfH)) {
-      return -1.;
-    }
-    return t;
-  };
-
   const int height = static_cast<int>(m_height);
 #pragma omp parallel for schedule(dynamic, 4)
   for (int v = 0; v < height; ++v) {
@@ -214,33 +481,12 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
       double sum = 0.;
       for (unsigned int j = 0; j < n; ++j) {
         for (unsigned int i = 0; i < n; ++i) {
-          double x = 0., y = 0., X = 0., Y = 0.;
+          double x = 0., y = 0., t = 0.;
           normalisedRay(u, static_cast<unsigned int>(v), i, j, x, y);
-          if (hit(x, y, X, Y) < 0.) {
-            sum += background;
-            continue;
-          }
-          double value = m_white;
-          if (frontSide) {
-            for (size_t k = 0; k < nbDiscs; ++k) {
-              const double ddx = X - discs[k].x, ddy = Y - discs[k].y;
-              const double r2 = ddx * ddx + ddy * ddy;
-              if (r2 <= discs[k].radius2) {
-                const std::vector<double> &bound = discs[k].ringRadius2;
-                size_t ring = 0;
-                while (ring + 1 < bound.size() && r2 <= bound[ring + 1]) {
-                  ++ring;
-                }
-                int s = static_cast<int>(ring % 2);
-                if (ring + 1 == bound.size()) {
-                  s = vpSSLPattern::circular(ddx, ddy, discs[k].radius, discs[k].p);
-                }
-                value = s == 0 ? m_black : m_white;
-                break;
-              }
-            }
-          }
-          sum += value;
+          const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
+                               scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
+                               scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
+          sum += shade(scene, scene.o, d, background, true, 0., t);
         }
       }
       const double mean = sum * invSamples;
@@ -253,17 +499,20 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
         grey[idx] = static_cast<unsigned char>(g < 0. ? 0. : (g > 255. ? 255. : g));
       }
       if (range) {
-        double x = 0., y = 0., X = 0., Y = 0.;
+        double x = 0., y = 0., t = 0.;
         if (!m_centralRayCache.empty()) {
           x = m_centralRayCache[2 * idx];
           y = m_centralRayCache[2 * idx + 1];
         } else {
           vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
         }
-        const double t = hit(x, y, X, Y);
-        // |oRc (x, y, 1)| = sqrt(x^2 + y^2 + 1): t scaled to metres along the ray.
-        range[idx] =
-            t < 0. ? std::numeric_limits<float>::infinity() : static_cast<float>(t * std::sqrt(x * x + y * y + 1.));
+        const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
+                             scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
+                             scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
+        shade(scene, scene.o, d, background, true, 0., t);
+        // |R (x, y, 1)| = sqrt(x^2 + y^2 + 1): t scaled to metres along the ray.
+        range[idx] = std::isfinite(t) ? static_cast<float>(t * std::sqrt(x * x + y * y + 1.))
+                                      : std::numeric_limits<float>::infinity();
       }
     }
   }
@@ -284,20 +533,55 @@ void vpSSLRenderer::render(const vpHomogeneousMatrix &cMo, vpImage<float> &refle
 
 std::vector<vpImagePoint> vpSSLRenderer::projectLandmarks(const vpHomogeneousMatrix &cMo) const
 {
+  std::vector<vpPoint> P;
+  if (m_aprilTag) {
+    P = m_tagSheet.getCorners();
+  } else {
+    P = m_target.getPoints();
+  }
   std::vector<vpImagePoint> points;
-  points.reserve(m_target.size());
-  for (const vpSSLTargetLandmark &l : m_target.getLandmarks()) {
-    const double X = cMo[0][0] * l.x + cMo[0][1] * l.y + cMo[0][2] * l.z + cMo[0][3];
-    const double Y = cMo[1][0] * l.x + cMo[1][1] * l.y + cMo[1][2] * l.z + cMo[1][3];
-    const double Z = cMo[2][0] * l.x + cMo[2][1] * l.y + cMo[2][2] * l.z + cMo[2][3];
-    if (!(Z > 0.)) {
+  points.reserve(P.size());
+  for (vpPoint &p : P) {
+    p.changeFrame(cMo);
+    if (!(p.get_Z() > 0.)) {
       const double nan = std::numeric_limits<double>::quiet_NaN();
       points.emplace_back(nan, nan);
       continue;
     }
     double u, v;
-    vpMeterPixelConversion::convertPoint(m_cam, X / Z, Y / Z, u, v);
+    vpMeterPixelConversion::convertPoint(m_cam, p.get_X() / p.get_Z(), p.get_Y() / p.get_Z(), u, v);
     points.emplace_back(v, u);
   }
   return points;
+}
+
+bool vpSSLRenderer::isTargetInView(const vpHomogeneousMatrix &cMo) const
+{
+  const Scene s = makeScene(cMo);
+  if (!(s.o[2] < 0.)) {
+    return false; // behind the sheet or edge-on: no printed side in view
+  }
+  const vpHomogeneousMatrix cMs = cMo * sheetPose();
+  const int nx = 16, ny = 12;
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      const double X = s.sheetX + s.halfW * (2. * i / nx - 1.), Y = s.sheetY + s.halfH * (2. * j / ny - 1.);
+      const double Xc = cMs[0][0] * X + cMs[0][1] * Y + cMs[0][3];
+      const double Yc = cMs[1][0] * X + cMs[1][1] * Y + cMs[1][3];
+      const double Zc = cMs[2][0] * X + cMs[2][1] * Y + cMs[2][3];
+      if (!(Zc > 0.)) {
+        continue;
+      }
+      const double x = Xc / Zc, y = Yc / Zc;
+      if (x < m_fovMinX || x > m_fovMaxX || y < m_fovMinY || y > m_fovMaxY) {
+        continue;
+      }
+      double u = 0., v = 0.;
+      vpMeterPixelConversion::convertPoint(m_cam, x, y, u, v);
+      if (u >= -0.5 && u <= m_width - 0.5 && v >= -0.5 && v <= m_height - 0.5) {
+        return true;
+      }
+    }
+  }
+  return false;
 }

@@ -10,8 +10,8 @@ vpSSLBrightnessNormalizer::vpSSLBrightnessNormalizer() : m_low(1.), m_high(99.),
 void vpSSLBrightnessNormalizer::setPercentiles(double low, double high)
 {
   if (!(low >= 0. && low < high && high <= 100.)) {
-    throw vpException(vpException::badValue, "vpSSLBrightnessNormalizer: percentiles %g, %g: need 0 <= low < high <= 100",
-                      low, high);
+    throw vpException(vpException::badValue,
+                      "vpSSLBrightnessNormalizer: percentiles %g, %g: need 0 <= low < high <= 100", low, high);
   }
   m_low = low;
   m_high = high;

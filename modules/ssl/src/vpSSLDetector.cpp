@@ -7,8 +7,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 
-namespace
-{
+namespace {
 // Window of the small-landmark mode on the twice upsampled image: 1.25 times the 16 px that an 8 px
 // landmark measures there (the response fades once w exceeds about 1.4 R, Eq. 2).
 const unsigned int kSmallModeWindow = 20;
@@ -45,8 +44,9 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 } // namespace
 
 vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
-  : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
-    m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_maxRadius(300.), m_threshold(0.12), m_rois()
+    : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
+      m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_maxRadius(300.), m_threshold(0.12),
+      m_rois()
 {
   m_radiusEstimator.setP(target.getP());
 }
@@ -97,21 +97,26 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     throw vpException(vpException::dimensionError, "vpSSLDetector::detect: empty image");
   }
 
-  const vpImage<unsigned char> *In = &I;
-  if (m_normalize) {
-    m_normalizer.apply(I, m_normalized);
-    In = &m_normalized;
-  }
+  // The rings are read on the camera's grey levels: the stretch that helps the matching function can
+  // clip a dark background to the ink's black, and the outermost ring is told from the background by
+  // its level (vpSSLRadiusEstimator).
+  const vpImage<unsigned char> *raw = &I;
   const std::vector<vpRect> *rois = &m_rois;
   const double scale = m_upsample ? 2. : 1.;
   if (m_upsample) {
-    upsample2(*In, m_upsampled);
-    In = &m_upsampled;
+    upsample2(I, m_upsampled);
+    raw = &m_upsampled;
     m_scaledRois.clear();
     for (const vpRect &r : m_rois) {
-      m_scaledRois.push_back(vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
+      m_scaledRois.push_back(
+          vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
     }
     rois = &m_scaledRois;
+  }
+  const vpImage<unsigned char> *In = raw;
+  if (m_normalize) {
+    m_normalizer.apply(*raw, m_normalized);
+    In = &m_normalized;
   }
   m_times.normalization = elapsedMs(t);
 
@@ -128,12 +133,13 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   m_times.peaks = elapsedMs(t);
 
   m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
+  m_radiusEstimator.setPixelScale(scale);
   for (const vpSSLPeak &peak : m_peaks) {
     vpSSLLandmark l;
     l.u = peak.u;
     l.v = peak.v;
     l.score = std::min(1., static_cast<double>(peak.value) / maxValue);
-    if (!m_radiusEstimator.estimate(*In, l)) {
+    if (!m_radiusEstimator.estimate(*raw, l)) {
       continue;
     }
     std::vector<int> S;

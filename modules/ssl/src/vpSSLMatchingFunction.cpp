@@ -5,8 +5,7 @@
 
 #include <visp3/core/vpException.h>
 
-namespace
-{
+namespace {
 const int kDu[4] = {1, -1, 0, 0};
 const int kDv[4] = {0, 0, 1, -1};
 } // namespace
@@ -39,7 +38,10 @@ int vpSSLMatchingFunction::offsetSqrtP(unsigned int xi) const
   return static_cast<int>(std::floor(std::sqrt(m_p) * xi + 0.5));
 }
 
-int vpSSLMatchingFunction::offsetP(unsigned int xi) const { return static_cast<int>(std::floor(m_p * xi + 0.5)); }
+int vpSSLMatchingFunction::offsetP(unsigned int xi) const
+{
+  return static_cast<int>(std::floor(m_p * xi + 0.5));
+}
 
 bool vpSSLMatchingFunction::evaluate(const vpImage<unsigned char> &I, int u, int v, vpSSLDirection d,
                                      unsigned int window, int &value) const

@@ -10,15 +10,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <thread>
+#include <new>
 
 #include <visp3/core/vpException.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 #include "vpSSLMatchingKernel.h"
+#include "vpSSLMatchingKernelThreads.h"
 
 namespace {
 namespace kernel = vpSSLMatchingKernel;
@@ -35,9 +32,11 @@ struct Span
   int v, u0, u1;
 };
 
+constexpr std::align_val_t kAlign{64}; // a cache line, an AVX-512 vector
+
 struct AlignedFree
 {
-  void operator()(uint8_t *p) const { std::free(p); }
+  void operator()(uint8_t *p) const { ::operator delete(p, kAlign); }
 };
 
 /*
@@ -50,8 +49,9 @@ struct Scratch
   std::size_t paddedCapacity = 0;
   std::vector<Box> boxes;
   std::vector<int> rowFirst;    // merged intervals of row v: intervals[rowFirst[v] .. rowFirst[v + 1])
-  std::vector<Span> intervals;  // (v unused) merged ROI intervals per row
+  std::vector<Span> intervals;  // merged intervals, row by row
   std::vector<Span> rowScratch; // intervals of one row before merging
+  std::vector<int> cursor;      // next column of each interval to cut into spans
   std::vector<Span> match, copy, zero;
 };
 
@@ -65,14 +65,15 @@ uint8_t *ensurePadded(Scratch &s, std::size_t size)
 {
   if (s.paddedCapacity < size) {
     // 64-byte rows for AVX-512; zeroed so that the padding the masked lanes read is initialised.
-    const std::size_t bytes = (size + 63) / 64 * 64;
-    void *p = std::aligned_alloc(64, bytes);
-    if (p == nullptr) {
+    s.padded.reset();
+    s.paddedCapacity = 0;
+    try {
+      s.padded.reset(static_cast<uint8_t *>(::operator new(size, kAlign)));
+    } catch (const std::bad_alloc &) {
       throw vpException(vpException::memoryAllocationError,
-                        "vpSSLMatchingFunction: cannot allocate %zu bytes for the padded image", bytes);
+                        "vpSSLMatchingFunction: cannot allocate %zu bytes for a padded copy of the image", size);
     }
-    std::memset(p, 0, bytes);
-    s.padded.reset(static_cast<uint8_t *>(p));
+    std::memset(s.padded.get(), 0, size);
     s.paddedCapacity = size;
   }
   return s.padded.get();
@@ -100,7 +101,9 @@ void mergeRows(Scratch &s, int W, int H, int grow)
         s.rowScratch.push_back({v, std::max(0, b.u0 - grow), std::min(W, b.u1 + grow)});
       }
     }
-    std::sort(s.rowScratch.begin(), s.rowScratch.end(), [](const Span &a, const Span &b) { return a.u0 < b.u0; });
+    if (s.rowScratch.size() > 1) {
+      std::sort(s.rowScratch.begin(), s.rowScratch.end(), [](const Span &a, const Span &b) { return a.u0 < b.u0; });
+    }
     for (const Span &r : s.rowScratch) {
       if (s.intervals.size() > static_cast<std::size_t>(s.rowFirst[v]) && r.u0 <= s.intervals.back().u1) {
         s.intervals.back().u1 = std::max(s.intervals.back().u1, r.u1);
@@ -110,18 +113,6 @@ void mergeRows(Scratch &s, int W, int H, int grow)
     }
   }
   s.rowFirst[H] = static_cast<int>(s.intervals.size());
-}
-
-unsigned int threadCount(unsigned int requested)
-{
-  if (requested > 0) {
-    return requested;
-  }
-#ifdef _OPENMP
-  return static_cast<unsigned int>(std::max(1, omp_get_num_procs()));
-#else
-  return std::max(1u, std::thread::hardware_concurrency());
-#endif
 }
 
 /*
@@ -143,11 +134,12 @@ void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImag
   P.window = w;
   P.out = M.bitmap;
   const std::ptrdiff_t steps[4] = {1, -1, P.stride, -P.stride}; // vpSSLDirection order
-  for (int dir = 0; dir < 4; ++dir) {
-    for (int xi = 0; xi <= w; ++xi) {
+  for (int xi = 0; xi <= w; ++xi) {
+    const int a = f.offsetSqrtP(static_cast<unsigned int>(xi)), b = f.offsetP(static_cast<unsigned int>(xi));
+    for (int dir = 0; dir < 4; ++dir) {
       P.offsets[dir][xi][0] = xi * steps[dir];
-      P.offsets[dir][xi][1] = f.offsetSqrtP(static_cast<unsigned int>(xi)) * steps[dir];
-      P.offsets[dir][xi][2] = f.offsetP(static_cast<unsigned int>(xi)) * steps[dir];
+      P.offsets[dir][xi][1] = a * steps[dir];
+      P.offsets[dir][xi][2] = b * steps[dir];
     }
   }
 
@@ -155,19 +147,26 @@ void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImag
   mergeRows(s, W, H, w);
   s.copy.assign(s.intervals.begin(), s.intervals.end());
 
-  // Pixels to match, strip by strip (strip-major, so that consecutive spans share their rows in cache), and the
-  // rest of M to clear.
+  // Pixels to match, in strips of columns measured from the start of each interval (so that a region of
+  // interest narrower than a strip stays one span), strip-major so that consecutive spans share their rows in
+  // cache; and the rest of M, to clear.
   mergeRows(s, W, H, 0);
   s.match.clear();
   s.zero.clear();
   const int strip = stripWidth(w);
-  for (int c0 = 0; c0 < W; c0 += strip) {
-    const int c1 = std::min(W, c0 + strip);
+  s.cursor.resize(s.intervals.size());
+  for (std::size_t k = 0; k < s.intervals.size(); ++k) {
+    s.cursor[k] = s.intervals[k].u0;
+  }
+  for (bool more = true; more;) {
+    more = false;
     for (int v = 0; v < H; ++v) {
       for (int k = s.rowFirst[v]; k < s.rowFirst[v + 1]; ++k) {
-        const int a = std::max(c0, s.intervals[k].u0), b = std::min(c1, s.intervals[k].u1);
+        const int a = s.cursor[k], b = std::min(s.intervals[k].u1, a + strip);
         if (a < b) {
           s.match.push_back({v, a, b});
+          s.cursor[k] = b;
+          more = more || b < s.intervals[k].u1;
         }
       }
     }
@@ -185,35 +184,43 @@ void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImag
     }
   }
 
-  const Span *copy = s.copy.data(), *match = s.match.data(), *zero = s.zero.data();
+  // Every pixel depends on its own neighbourhood only, so any split gives the same map. Tasks of a few rows of a
+  // strip keep a thread's rows in its cache.
+  long long work = 0;
+  for (const Span &r : s.match) {
+    work += r.u1 - r.u0;
+  }
+  // Below about 2^18 pixel-terms (a few microseconds) waking a worker costs more than it saves.
+  const unsigned int threads =
+      work * w < (1 << 18) ? 1u : (f.getNbThreads() > 0 ? f.getNbThreads() : kernel::hardwareThreads());
   const int nCopy = static_cast<int>(s.copy.size()), nMatch = static_cast<int>(s.match.size()),
             nZero = static_cast<int>(s.zero.size());
+  constexpr int kCopyTask = 64, kMatchTask = 8;
+  const Span *copy = s.copy.data(), *match = s.match.data(), *zero = s.zero.data();
   const unsigned char *image = I.bitmap;
-  const std::ptrdiff_t stride = P.stride;
   int32_t *out = M.bitmap;
-#ifdef _OPENMP
-  const int threads = static_cast<int>(std::min<unsigned int>(threadCount(f.getNbThreads()), std::max(nMatch, 1)));
-#endif
-  // Every pixel depends on its own neighbourhood only, so any split gives the same map. Dynamic chunks of a few
-  // rows of a strip keep a thread's rows in its cache and let an idle core take over from a busy one.
-#pragma omp parallel num_threads(threads) if (threads > 1)
-  {
-#pragma omp for schedule(static)
-    for (int i = 0; i < nCopy; ++i) {
-      std::memcpy(padded + copy[i].v * stride + copy[i].u0,
-                  image + static_cast<std::ptrdiff_t>(copy[i].v) * W + copy[i].u0,
-                  static_cast<std::size_t>(copy[i].u1 - copy[i].u0));
-    }
-#pragma omp for schedule(static) nowait
-    for (int i = 0; i < nZero; ++i) {
-      std::fill(out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u0,
-                out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u1, 0);
-    }
-#pragma omp for schedule(dynamic, 16)
-    for (int i = 0; i < nMatch; ++i) {
-      kernel::matchSpan(P, match[i].v, match[i].u0, match[i].u1);
-    }
+  // The copy (a memcpy per row, tens of microseconds) stays on the calling thread: a job of its own would cost a
+  // second wake-up of the workers.
+  for (int i = 0; i < nCopy; ++i) {
+    std::memcpy(padded + copy[i].v * P.stride + copy[i].u0,
+                image + static_cast<std::ptrdiff_t>(copy[i].v) * W + copy[i].u0,
+                static_cast<std::size_t>(copy[i].u1 - copy[i].u0));
   }
+  // The cleared pixels and the matched ones are disjoint: one job does both.
+  const int matchTasks = (nMatch + kMatchTask - 1) / kMatchTask, zeroTasks = (nZero + kCopyTask - 1) / kCopyTask;
+  kernel::parallelFor(matchTasks + zeroTasks, threads, [&](int task) {
+    if (task < matchTasks) {
+      for (int i = task * kMatchTask; i < std::min(nMatch, (task + 1) * kMatchTask); ++i) {
+        kernel::matchSpan(P, match[i].v, match[i].u0, match[i].u1);
+      }
+    } else {
+      task -= matchTasks;
+      for (int i = task * kCopyTask; i < std::min(nZero, (task + 1) * kCopyTask); ++i) {
+        std::fill(out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u0,
+                  out + static_cast<std::ptrdiff_t>(zero[i].v) * W + zero[i].u1, 0);
+      }
+    }
+  });
 }
 } // namespace
 

@@ -23,8 +23,7 @@ void vpSSLPeakDetector::setMaxPeaks(unsigned int n)
   m_maxPeaks = n;
 }
 
-namespace
-{
+namespace {
 // Vertex of the parabola through (-1, a), (0, b), (1, c); 0 when flat.
 double parabolaOffset(double a, double b, double c)
 {

@@ -5,8 +5,7 @@
 
 #include <visp3/core/vpException.h>
 
-namespace
-{
+namespace {
 const double kCos[8] = {1., M_SQRT1_2, 0., -M_SQRT1_2, -1., -M_SQRT1_2, 0., M_SQRT1_2};
 const double kSin[8] = {0., M_SQRT1_2, 1., M_SQRT1_2, 0., -M_SQRT1_2, -1., -M_SQRT1_2};
 // Rings narrower than this (px) are blurred into their neighbours by any real lens: not read.
@@ -19,6 +18,17 @@ const double kGridRatio = 1.02;
 const double kMinPairContrast = 6.;
 // Rings at least this wide (px) are read on any landmark that is in focus.
 const double kClearRingWidth = 2.5;
+// How far the outermost ring's level may stray from the inner black rings', relative to the ring contrast.
+const double kInkTolerance = 0.3;
+// Share of a solid ring's interior samples that must be on its side of the mid level.
+const double kSolidRing = 0.85;
+// Radius (px) of the disc compared with its half-turn to centre a candidate: the innermost rings, which
+// every landmark has whatever its size.
+const double kSymmetryRadius = 8.;
+// Share of the best level's total score that an outer level needs to be taken for the landmark's.
+const double kLevelShare = 0.7;
+// Alternating ring pairs a ray must show, blur permitting (fewer only when fewer rings are resolvable).
+const int kMinAlternations = 3;
 
 // Largest relative distance of a ray's edge point from the fitted ellipse.
 const double kMaxEllipseResidual = 0.08;
@@ -26,6 +36,9 @@ const double kMaxEllipseResidual = 0.08;
 struct Ellipse
 {
   double major = 0., minor = 0., theta = 0.;
+  double a = 0., b = 0., c = 0.; // a x^2 + 2 b x y + c y^2 = 1
+  //! Distance from the centre to the ellipse along the unit direction (x, y).
+  double radiusAlong(double x, double y) const { return 1. / std::sqrt(a * x * x + 2. * b * x * y + c * y * y); }
   double worstResidual = 0.;
   int worstRay = -1;
 };
@@ -76,6 +89,9 @@ bool fitEllipse(const double R[8], const bool ok[8], Ellipse &e)
   if (!(a > 0. && dt > 0.)) {
     return false;
   }
+  e.a = a;
+  e.b = b;
+  e.c = c;
   const double disc = std::sqrt(std::max(0., 0.25 * tr * tr - dt));
   const double l1 = 0.5 * tr - disc, l2 = 0.5 * tr + disc; // l1 <= l2: l1 along the major axis
   e.major = 1. / std::sqrt(l1);
@@ -89,7 +105,7 @@ bool fitEllipse(const double R[8], const bool ok[8], Ellipse &e)
       continue;
     }
     const double q = a * kCos[d] * kCos[d] + 2. * b * kCos[d] * kSin[d] + c * kSin[d] * kSin[d];
-    const double residual = std::fabs(R[d] * std::sqrt(q) - 1.);
+    const double residual = q > 0. ? std::fabs(R[d] * std::sqrt(q) - 1.) : 1e30;
     if (residual > e.worstResidual) {
       e.worstResidual = residual;
       e.worstRay = d;
@@ -111,7 +127,7 @@ inline float bilinear(const vpImage<unsigned char> &I, double u, double v)
 } // namespace
 
 vpSSLRadiusEstimator::vpSSLRadiusEstimator()
-  : m_minRadius(4.), m_maxRadius(300.), m_minDirections(6), m_p(0.5), m_step(0.5)
+    : m_minRadius(4.), m_maxRadius(300.), m_minDirections(6), m_p(0.5), m_step(0.5), m_pixelScale(1.)
 {
 }
 
@@ -131,6 +147,14 @@ void vpSSLRadiusEstimator::setMinDirections(unsigned int n)
     throw vpException(vpException::badValue, "vpSSLRadiusEstimator: min directions %u not in [3, 8]", n);
   }
   m_minDirections = n;
+}
+
+void vpSSLRadiusEstimator::setPixelScale(double scale)
+{
+  if (!(scale >= 1.)) {
+    throw vpException(vpException::badValue, "vpSSLRadiusEstimator: pixel scale %g < 1", scale);
+  }
+  m_pixelScale = scale;
 }
 
 void vpSSLRadiusEstimator::setP(double p)
@@ -168,7 +192,7 @@ bool vpSSLRadiusEstimator::readRays(const vpImage<unsigned char> &I, double u, d
 }
 
 double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContrast, int &nbPairsOut,
-                                       int &nbExpected) const
+                                      int &nbExpected) const
 {
   const std::vector<float> &P = m_profile[d];
   const std::vector<double> &C = m_prefix[d];
@@ -186,15 +210,16 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   };
   // Contrast of each pair of adjacent rings, signed so that it is positive where the rings alternate
   // as printed: ring k is black for even k (the outermost ring is black), white for odd k.
-  double contrast[64];
+  double contrast[64], level[65];
   int nb = 0;
   double previous = 0., outerEdge = radius, cmax = 0.;
   for (int k = 0; nb < 64; ++k) {
     const double innerEdge = outerEdge * q;
-    if (outerEdge - innerEdge < kMinRingWidth || innerEdge < kMinRingRadius) {
+    if (outerEdge - innerEdge < kMinRingWidth * m_pixelScale || innerEdge < kMinRingRadius * m_pixelScale) {
       break;
     }
     const double mean = (integral(outerEdge) - integral(innerEdge)) / (outerEdge - innerEdge);
+    level[k] = mean;
     if (k > 0) {
       contrast[nb] = ((k - 1) % 2 == 0) ? mean - previous : previous - mean;
       cmax = std::max(cmax, contrast[nb]);
@@ -207,7 +232,7 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   outerContrast = nb > 0 ? contrast[0] : 0.;
   // Pairs whose inner ring is wide enough (kClearRingWidth) to survive a real lens: these must all alternate.
   nbExpected = 0;
-  for (double r = radius * q; nbExpected < nb && r * (1. - q) >= kClearRingWidth; r *= q) {
+  for (double r = radius * q; nbExpected < nb && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
     ++nbExpected;
   }
   // Walking inwards, the rings must keep alternating until they blur into each other (the lens, the
@@ -223,30 +248,70 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       break;
     }
   }
-  return nbPairsOut >= 2 ? score : -1e30;
+  if (nbPairsOut < 2) {
+    return -1e30;
+  }
+  // All black rings are printed with the same ink and seen at the same range: the outermost one must be
+  // as dark as the inner ones. Otherwise a dark background beyond the white paper passes for one more
+  // ring, and the landmark for one twice its size.
+  double black = 0., white = 0.;
+  int nbBlack = 0, nbWhite = 0;
+  // Only clearly resolved rings give the ink's level; thinner ones are greyed by the lens and sampling.
+  const int nbLevels = std::min(nbPairsOut, std::max(2, nbExpected));
+  for (int k = 1; k <= nbLevels; ++k) {
+    if (k % 2 == 0) {
+      black += level[k];
+      ++nbBlack;
+    } else {
+      white += level[k];
+      ++nbWhite;
+    }
+  }
+  black /= nbBlack;
+  white /= nbWhite;
+  if (std::fabs(level[0] - black) > kInkTolerance * (white - black)) {
+    return -1e30;
+  }
+  // The two outer rings are printed solid: away from their blurred edges nearly every sample must be on
+  // their side of the mid level. A neighbouring landmark's ring or the sheet's edge that happens to
+  // darken part of the band beyond a landmark is not.
+  const double mid = 0.5 * (black + white);
+  for (int k = 0; k < 2; ++k) {
+    const double outer = radius * std::pow(q, k), inner = outer * q;
+    const double margin = 0.25 * (outer - inner);
+    const size_t i0 = static_cast<size_t>(std::ceil((inner + margin) / m_step)) + 1;
+    const size_t i1 = std::min(P.size() - 2, static_cast<size_t>(std::floor((outer - margin) / m_step)));
+    size_t n = 0, right = 0;
+    for (size_t i = i0; i <= i1; ++i, ++n) {
+      // Three neighbouring samples (1.5 px) so that sensor noise does not flip a sample.
+      const double value = (P[i - 1] + P[i] + P[i + 1]) / 3.;
+      right += ((value < mid) == (k == 0)) ? 1 : 0;
+    }
+    if (n > 0 && right < kSolidRing * n) {
+      return -1e30;
+    }
+  }
+  return score;
 }
 
-bool vpSSLRadiusEstimator::fitRay(int d, double &radius) const
+void vpSSLRadiusEstimator::rayCandidates(int d, std::vector<Candidate> &candidates) const
 {
+  candidates.clear();
   const double available = (m_profile[d].size() - 1) * m_step;
   const double rMax = std::min(m_maxRadius, available);
-  if (rMax < m_minRadius) {
-    return false;
-  }
-  double bestScore = -1e30, bestR = 0.;
-  std::vector<double> grid;
+  std::vector<double> &grid = m_grid, &scores = m_scores;
+  grid.clear();
   for (double r = m_minRadius; r <= rMax; r *= kGridRatio) {
     grid.push_back(r);
   }
-  std::vector<double> scores(grid.size(), -1e30);
-  size_t best = grid.size();
+  scores.assign(grid.size(), -1e30);
   for (size_t i = 0; i < grid.size(); ++i) {
     double outer;
     int nbPairs, nbExpected;
     const double s = rayScore(d, grid[i], outer, nbPairs, nbExpected);
     // Every clearly resolvable ring must alternate: a handful of alternations at a geometric spacing
     // happens in clutter, a full self-similar sequence does not.
-    if (nbPairs < std::max(2, nbExpected - 1)) {
+    if (nbPairs < std::max(2, std::min(nbExpected - 1, kMinAlternations))) {
       continue;
     }
     // The outermost ring must stand out dark against the next one: this pins R against the p-similar
@@ -255,25 +320,26 @@ bool vpSSLRadiusEstimator::fitRay(int d, double &radius) const
       continue;
     }
     scores[i] = s;
-    if (s > bestScore) {
-      bestScore = s;
-      best = i;
+  }
+  // Every local maximum is a candidate: the landmark's R, its p-similar inner copies R p^k, and whatever
+  // the clutter around it makes of R / p. The rays decide together (estimate()).
+  for (size_t i = 0; i < grid.size(); ++i) {
+    const double b = scores[i];
+    const double a = i > 0 ? scores[i - 1] : -1e30, c = i + 1 < grid.size() ? scores[i + 1] : -1e30;
+    if (b <= -1e29 || a > b || c >= b) {
+      continue;
     }
-  }
-  if (best == grid.size()) {
-    return false;
-  }
-  bestR = grid[best];
-  if (best > 0 && best + 1 < grid.size() && scores[best - 1] > -1e29 && scores[best + 1] > -1e29) {
-    const double a = scores[best - 1], b = scores[best], c = scores[best + 1];
-    const double den = a - 2. * b + c;
-    if (den < 0.) {
-      const double t = std::max(-1., std::min(1., 0.5 * (a - c) / den));
-      bestR *= std::pow(kGridRatio, t);
+    Candidate cand;
+    cand.radius = grid[i];
+    cand.score = b;
+    if (a > -1e29 && c > -1e29) {
+      const double den = a - 2. * b + c;
+      if (den < 0.) {
+        cand.radius *= std::pow(kGridRatio, std::max(-1., std::min(1., 0.5 * (a - c) / den)));
+      }
     }
+    candidates.push_back(cand);
   }
-  radius = bestR;
-  return true;
 }
 
 bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, double &position) const
@@ -299,7 +365,8 @@ bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, do
   }
   const double mid = 0.5 * (levelOut + levelIn);
   const long i0 = std::max(0L, static_cast<long>(std::floor((expected - halfWidth) / m_step)));
-  const long i1 = std::min(static_cast<long>(P.size()) - 2, static_cast<long>(std::ceil((expected + halfWidth) / m_step)));
+  const long i1 =
+      std::min(static_cast<long>(P.size()) - 2, static_cast<long>(std::ceil((expected + halfWidth) / m_step)));
   double best = -1., bestDist = 1e30;
   for (long i = i0; i <= i1; ++i) {
     const double a = P[i] - mid, b = P[i + 1] - mid;
@@ -318,38 +385,109 @@ bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, do
   return true;
 }
 
-bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8], double &scale)
+{
+  std::vector<Candidate> *candidates = m_candidates;
+  for (int d = 0; d < 8; ++d) {
+    rayCandidates(d, candidates[d]);
+  }
+  if (ref == nullptr) {
+    // From the matching peak, which may sit a few pixels off the centre for a landmark smaller than the
+    // window: each ray's best reading, and the rays that disagree wildly with the others dropped.
+    std::vector<double> valid;
+    for (int d = 0; d < 8; ++d) {
+      ok[d] = false;
+      double best = -1.;
+      for (const Candidate &c : candidates[d]) {
+        if (c.score > best) {
+          best = c.score;
+          R[d] = c.radius;
+          ok[d] = true;
+        }
+      }
+      if (ok[d]) {
+        valid.push_back(R[d]);
+      }
+    }
+    if (valid.size() < m_minDirections) {
+      return false;
+    }
+    std::nth_element(valid.begin(), valid.begin() + valid.size() / 2, valid.end());
+    scale = valid[valid.size() / 2];
+    // Each ray then takes its reading nearest the median: a ray whose best reading is another level
+    // (clutter extending the pattern, an inner copy, perspective) usually has this landmark's too.
+    for (int d = 0; d < 8; ++d) {
+      ok[d] = false;
+      for (const Candidate &c : candidates[d]) {
+        if (c.radius >= 0.6 * scale && c.radius <= 1.7 * scale &&
+            (!ok[d] || std::fabs(std::log(c.radius / scale)) < std::fabs(std::log(R[d] / scale)))) {
+          R[d] = c.radius;
+          ok[d] = true;
+        }
+      }
+    }
+    return true;
+  }
+  // The p-similar copies of the landmark sit at R p^k along every ray, so each ray's candidates fall on
+  // levels k relative to the first reading (ref: its ellipse, in this ray's direction). The inner copies
+  // read fewer rings, so they score less than R; a level beyond R shows only where clutter (a
+  // neighbour's ring, the sheet's edge) happens to extend the pattern, on a few rays. So the outermost
+  // level whose rays together score nearly as much as the best level's is the landmark's.
+  const double logStep = std::log(1. / m_p);
+  const int minLevel = -3, maxLevel = 2;
+  double total[maxLevel - minLevel + 1] = {0.};
+  unsigned int support[maxLevel - minLevel + 1] = {0};
+  double pick[maxLevel - minLevel + 1][8];
+  double pickScore[maxLevel - minLevel + 1][8];
+  for (int k = 0; k <= maxLevel - minLevel; ++k) {
+    for (int d = 0; d < 8; ++d) {
+      pickScore[k][d] = 0.;
+    }
+  }
+  for (int d = 0; d < 8; ++d) {
+    for (const Candidate &c : candidates[d]) {
+      const double x = std::log(c.radius / ref[d]) / logStep;
+      const int k = static_cast<int>(std::lround(x));
+      // Within 19 %, or 2 camera pixels for a small landmark whose first reading is that coarse.
+      const double tolerance = std::max(0.25, 2. * m_pixelScale / (ref[d] * std::pow(1. / m_p, k)) / logStep);
+      if (k < minLevel || k > maxLevel || std::fabs(x - k) >= tolerance) {
+        continue;
+      }
+      const int i = k - minLevel;
+      if (c.score > pickScore[i][d]) {
+        pickScore[i][d] = c.score;
+        pick[i][d] = c.radius;
+      }
+    }
+  }
+  double best = 0.;
+  for (int i = 0; i <= maxLevel - minLevel; ++i) {
+    for (int d = 0; d < 8; ++d) {
+      if (pickScore[i][d] > 0.) {
+        total[i] += pickScore[i][d];
+        ++support[i];
+      }
+    }
+    best = std::max(best, total[i]);
+  }
+  for (int i = maxLevel - minLevel; i >= 0; --i) {
+    if (support[i] >= 3 && total[i] >= kLevelShare * best) {
+      for (int d = 0; d < 8; ++d) {
+        ok[d] = pickScore[i][d] > 0.;
+        R[d] = ok[d] ? pick[i][d] : 0.;
+      }
+      scale *= std::pow(1. / m_p, i + minLevel);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool vpSSLRadiusEstimator::refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u,
+                                        double &v, double R[8], bool ok[8])
 {
   const double q = std::sqrt(m_p);
-  double u = landmark.u, v = landmark.v;
-  double R[8];
-  bool ok[8];
   unsigned int nbOk = 0;
-  // 1. Read the rings along each ray from the matching peak: which rays show the pattern, and how large.
-  if (!readRays(I, u, v, m_maxRadius)) {
-    return false;
-  }
-  for (int d = 0; d < 8; ++d) {
-    ok[d] = fitRay(d, R[d]);
-    nbOk += ok[d] ? 1 : 0;
-  }
-  if (nbOk < m_minDirections) {
-    return false;
-  }
-  // Rays that disagree wildly with the others read a ring pattern that is not this landmark's.
-  std::vector<double> valid;
-  for (int d = 0; d < 8; ++d) {
-    if (ok[d]) {
-      valid.push_back(R[d]);
-    }
-  }
-  std::nth_element(valid.begin(), valid.begin() + valid.size() / 2, valid.end());
-  const double median = valid[valid.size() / 2];
-  for (int d = 0; d < 8; ++d) {
-    if (ok[d] && (R[d] < 0.6 * median || R[d] > 1.7 * median)) {
-      ok[d] = false;
-    }
-  }
   // 2. Edges of the printed rings (not the outer edge, whose outside is unknown) locate the centre and
   // the radius to a fraction of a pixel: the midpoint of opposite edges is the centre of that ring's
   // ellipse. Under perspective the rings are not concentric (their centres drift with the square of
@@ -368,7 +506,9 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
       double expected = R[d] * q;
       for (int j = 0; j < maxEdges; ++j, expected *= q) {
         const double ringWidth = expected * (1. - q);
-        if (ringWidth < 1.2 || !ringEdge(d, expected, 0.3 * ringWidth, edge[d][j])) {
+        // The first edge is needed; deeper ones only help the extrapolation when wide enough not to be blurred.
+        const double minWidth = (j == 0 ? 1.2 : 3.) * m_pixelScale;
+        if (ringWidth < minWidth || !ringEdge(d, expected, 0.3 * ringWidth, edge[d][j])) {
           break;
         }
         ++nbEdges[d];
@@ -421,7 +561,7 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
     u += du;
     v += dv;
     // A matching peak sits near the centre; rays that pull it far away read some other pattern.
-    if (std::hypot(u - landmark.u, v - landmark.v) > std::max(2., 0.25 * median)) {
+    if (std::hypot(u - u0, v - v0) > std::max(2., 0.25 * scale)) {
       return false;
     }
     for (int d = 0; d < 8; ++d) {
@@ -430,6 +570,89 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
     if (!readRays(I, u, v, m_maxRadius)) {
       return false;
     }
+  }
+  return true;
+}
+
+bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v) const
+{
+  // The landmark is point-symmetric, and stays so under any affine view, symmetric blur and noise: its
+  // centre minimises the difference between the image and its half-turn about it. Centres on the
+  // half-pixel grid pair whole pixels, so no interpolation is needed.
+  const int radius = static_cast<int>(std::lround(kSymmetryRadius * m_pixelScale));
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  const int reach = 6; // half pixels searched either way
+  const int cu = static_cast<int>(std::lround(2. * u)), cv = static_cast<int>(std::lround(2. * v));
+  if (cu - reach < 2 * radius || cv - reach < 2 * radius || cu + reach > 2 * (W - 1 - radius) ||
+      cv + reach > 2 * (H - 1 - radius)) {
+    return false; // too close to the border to compare both halves: keep the peak
+  }
+  double E[2 * reach + 1][2 * reach + 1];
+  int bi = reach, bj = reach;
+  for (int j = -reach; j <= reach; ++j) {
+    for (int i = -reach; i <= reach; ++i) {
+      const int su = cu + i, sv = cv + j; // twice the centre
+      double e = 0.;
+      for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+          if (dx * dx + dy * dy > radius * radius || (dy < 0 || (dy == 0 && dx <= 0))) {
+            continue;
+          }
+          // Pixels p and q with p + q = 2 c.
+          const int pu = (su + 2 * dx) >> 1, pv = (sv + 2 * dy) >> 1;
+          const int qu = su - pu, qv = sv - pv;
+          const double diff = static_cast<double>(I[pv][pu]) - I[qv][qu];
+          e += diff * diff;
+        }
+      }
+      E[j + reach][i + reach] = e;
+      if (e < E[bj + reach][bi + reach] || (i == -reach && j == -reach)) {
+        if (!(i == -reach && j == -reach) || true) {
+          bi = i;
+          bj = j;
+        }
+      }
+    }
+  }
+  double du = 0., dv = 0.;
+  if (bi > -reach && bi < reach) {
+    const double a = E[bj + reach][bi + reach - 1], b = E[bj + reach][bi + reach], c = E[bj + reach][bi + reach + 1];
+    const double den = a - 2. * b + c;
+    du = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
+  }
+  if (bj > -reach && bj < reach) {
+    const double a = E[bj + reach - 1][bi + reach], b = E[bj + reach][bi + reach], c = E[bj + reach + 1][bi + reach];
+    const double den = a - 2. * b + c;
+    dv = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
+  }
+  u = 0.5 * (cu + bi + du);
+  v = 0.5 * (cv + bj + dv);
+  return true;
+}
+
+bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+{
+  double u = landmark.u, v = landmark.v, scale = 0.;
+  symmetryCentre(I, u, v);
+  double R[8];
+  bool ok[8];
+  // 1. From the matching peak: a first reading of each ray, and the centre from the ring edges.
+  if (!readRays(I, u, v, m_maxRadius) || !selectRadii(nullptr, R, ok, scale) ||
+      !refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok)) {
+    return false;
+  }
+  // 2. From the centre: the rays agree on the landmark's level, and the centre is refined again.
+  Ellipse first;
+  if (!fitEllipse(R, ok, first)) {
+    return false;
+  }
+  double ref[8];
+  for (int d = 0; d < 8; ++d) {
+    ref[d] = first.radiusAlong(kCos[d], kSin[d]);
+  }
+  if (!readRays(I, u, v, m_maxRadius) || !selectRadii(ref, R, ok, scale) ||
+      !refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok)) {
+    return false;
   }
   // The rays' edge points lie on one ellipse centred on the landmark; a ray that strays from it read
   // something else (occluder, clutter) and is dropped, and a candidate without a consistent ellipse is no
@@ -446,6 +669,9 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
     if (e.worstResidual <= kMaxEllipseResidual) {
       landmark.nbDirections = nb;
       break;
+    }
+    if (e.worstRay < 0) {
+      return false;
     }
     ok[e.worstRay] = false;
   }

@@ -5,8 +5,7 @@
 
 #include <visp3/core/vpException.h>
 
-namespace
-{
+namespace {
 // Affine map of the unit circle onto a landmark's outer ellipse: undoing it rectifies the target plane
 // locally, up to a rotation, a scale and without changing its orientation (its determinant is > 0).
 struct Ellipse2x2
@@ -41,7 +40,7 @@ struct Hypothesis
 } // namespace
 
 vpSSLTargetIdentifier::vpSSLTargetIdentifier(const vpSSLTarget &target)
-  : m_target(target), m_radiusTol(0.35), m_distanceTol(0.25), m_big(-1)
+    : m_target(target), m_radiusTol(0.35), m_distanceTol(0.25), m_big(-1)
 {
   if (m_target.size() == 0) {
     throw vpException(vpException::badValue, "vpSSLTargetIdentifier: target \"%s\" has no landmark",

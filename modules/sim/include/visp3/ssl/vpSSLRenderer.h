@@ -11,6 +11,8 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpImagePoint.h>
+#include <visp3/core/vpPlane.h>
+#include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
 /*!
@@ -31,6 +33,15 @@
   projectLandmarks() uses the meter-to-pixel model (kud). ViSP's kud and kdu are only approximate
   inverses of each other: for a consistent pair, fit kdu to kud (the tests' sslt::cameraWithDistortion
   leaves 0.23 px in the corners of a 640 x 480 image at kud = -0.05, 0.03 px within 200 px of the centre).
+
+  Scene around the sheet (optional, see tutorial-ssl-simulate-sequence.cpp):
+  - setAprilTagSheet() prints an AprilTag 36h11 sheet instead of the SSL target, for the baseline.
+  - setBackdrop() adds a textured plane (a seabed, a wall with a photograph) seen where rays miss the
+    sheet; its range goes to the range image, so the water model fades it with distance.
+  - setWaterSurface() adds the water-air interface: a ray that reaches it from below is reflected with the
+    Fresnel reflectance of water to air, total beyond the critical angle of 48.6 degrees from the normal
+    (paper Sec. 3.1: the target's mirror image, of opposite handedness), and otherwise also sees the
+    bright sky through Snell's window. The range of a reflected ray is its whole path in the water.
 
   Rows are rendered in parallel (OpenMP); a 640 x 480 frame at 16 samples per pixel costs about
   60 ms on one core when the target fills it, far less when it is small.
@@ -68,11 +79,44 @@ public:
     \exception vpException if its size is not the renderer's.
   */
   void setBackgroundImage(const vpImage<unsigned char> &I);
+  /*!
+    Prints \e sheet instead of the SSL target. render() and isTargetInView() then take cMo as the pose of
+    the tag frame (vpSSLAprilTagSheet: the frame of vpDetectorAprilTag::getPose()), and projectLandmarks()
+    returns the four corners of the black square in the order of vpDetectorAprilTag::getPolygon().
+    setTarget() switches back to an SSL target.
+  */
+  void setAprilTagSheet(const vpSSLAprilTagSheet &sheet);
+  /*!
+    A textured plane behind the scene: the plane Z = 0 of a frame b whose pose in the target frame is set by
+    setBackdropPose(), showing \e texture (reflectance I / 255) with its centre at b's origin, columns along
+    X and rows along Y, \e texelSize metres per texel, repeated by mirroring so that it has no end and no seam.
+    An empty texture removes the backdrop.
+    \exception vpException if texelSize is not > 0.
+  */
+  void setBackdrop(const vpImage<unsigned char> &texture, double texelSize);
+  //! Pose oMb of the backdrop frame in the target frame (the frame of cMo); identity until set.
+  void setBackdropPose(const vpHomogeneousMatrix &oMb);
+  /*!
+    The water surface, as a plane in the target frame (the frame of cMo) whose normal (A, B, C) points up,
+    into the air. The camera must be below it.
+    \exception vpException if the normal is zero.
+  */
+  void setWaterSurface(const vpPlane &surface);
+  //! Removes the water surface.
+  void clearWaterSurface();
 
   //! The SSL target printed on the sheet.
   const vpSSLTarget &getTarget() const { return m_target; }
   //! Number of sub-pixels per axis.
   unsigned int getSupersampling() const { return m_supersampling; }
+  //! True after setAprilTagSheet(), until setTarget().
+  bool hasAprilTagSheet() const { return m_aprilTag; }
+  //! The AprilTag sheet (meaningful when hasAprilTagSheet()).
+  const vpSSLAprilTagSheet &getAprilTagSheet() const { return m_tagSheet; }
+  //! True when a backdrop texture is set.
+  bool hasBackdrop() const { return !m_backdrop.empty(); }
+  //! True when a water surface is set.
+  bool hasWaterSurface() const { return m_hasSurface; }
 
   //! Renders the target at pose cMo (target frame in the camera frame) as an 8-bit image (255 * reflectance).
   void render(const vpHomogeneousMatrix &cMo, vpImage<unsigned char> &I) const;
@@ -83,6 +127,12 @@ public:
   //! Projection of the landmark centres at cMo, in pixels (distortion included), in target order; a centre
   //! behind the camera (Z <= 0) gets NaN coordinates.
   std::vector<vpImagePoint> projectLandmarks(const vpHomogeneousMatrix &cMo) const;
+  /*!
+    Whether some of the printed side of the sheet is in the image at cMo: a 17 x 13 grid of points over the
+    sheet is projected, and one inside the image and in front of the camera, seen from the printed side,
+    is enough. The target may still be hidden behind the water surface's reflection of something else.
+  */
+  bool isTargetInView(const vpHomogeneousMatrix &cMo) const;
 
   const vpCameraParameters &getCameraParameters() const { return m_cam; } ///< Camera model.
   unsigned int getWidth() const { return m_width; }                       ///< Image width.
@@ -94,7 +144,14 @@ private:
     double x, y, radius, radius2, p;
     std::vector<double> ringRadius2; //!< Squared outer radius of ring k at [k] (ring 0, outermost, is black).
   };
+  struct Scene;
   void renderCore(const vpHomogeneousMatrix &cMo, float *reflectance, float *range, unsigned char *grey) const;
+  Scene makeScene(const vpHomogeneousMatrix &cMo) const;
+  double shade(const Scene &scene, const double p[3], const double d[3], double background, bool surface,
+               double path0, double &t) const;
+  double sheetValue(double X, double Y) const;
+  double backdropValue(double a, double b, double footprint) const;
+  vpHomogeneousMatrix sheetPose() const;
   void updateRayCache();
   void normalisedRay(unsigned int u, unsigned int v, unsigned int i, unsigned int j, double &x, double &y) const;
 
@@ -108,6 +165,18 @@ private:
   double m_background;
   vpImage<unsigned char> m_backgroundImage;
   std::vector<Disc> m_discs;
+  bool m_aprilTag;
+  vpSSLAprilTagSheet m_tagSheet;
+  //! Backdrop texture and its box-filtered pyramid (level k has 2^k texels per texel of level 0), so that a
+  //! distant backdrop is sampled at its footprint: no aliasing, and few cache misses.
+  std::vector<vpImage<unsigned char> > m_backdrop;
+  double m_texelSize;
+  vpHomogeneousMatrix m_oMb;
+  bool m_hasSurface;
+  vpPlane m_surface;
+  //! Undistorted normalised coordinates spanned by the image border, so that isTargetInView() does not take
+  //! a point far outside the field of view, folded back by a distortion polynomial, for a visible one.
+  double m_fovMinX, m_fovMaxX, m_fovMinY, m_fovMaxY;
   //! Undistorted normalised x of every sub-pixel column, (u + offset - u0) / px; m_subY likewise for rows.
   //! The perspective models are separable up to the kdu factor, so two small tables cover all rays.
   std::vector<double> m_subX;

@@ -102,9 +102,9 @@ public:
   */
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_rois = rois; }
 
-  unsigned int getWindow() const { return m_window; } ///< Window length w (at full resolution).
-  double getThreshold() const { return m_threshold; }            ///< Score threshold.
-  bool getBrightnessNormalization() const { return m_normalize; } ///< Whether normalisation is on.
+  unsigned int getWindow() const { return m_window; }                       ///< Window length w (at full resolution).
+  double getThreshold() const { return m_threshold; }                       ///< Score threshold.
+  bool getBrightnessNormalization() const { return m_normalize; }           ///< Whether normalisation is on.
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); } ///< Target model.
 
   //! Landmarks of the last detection, best score first.

@@ -89,8 +89,7 @@ public:
     used by the apparent-radius sweep (Eq. 7).
     \return false (and leaves \e value untouched) when the window leaves the image.
   */
-  bool evaluate(const vpImage<unsigned char> &I, int u, int v, vpSSLDirection d, unsigned int window,
-                int &value) const;
+  bool evaluate(const vpImage<unsigned char> &I, int u, int v, vpSSLDirection d, unsigned int window, int &value) const;
 
   /*!
     Cumulative matching function along one direction: \e S[k] is the Eq. 3 sum over

@@ -47,9 +47,9 @@ public:
   void setMinDistance(unsigned int d);
   //! At most this many peaks are kept, strongest first (>= 1).
   void setMaxPeaks(unsigned int n);
-  int getThreshold() const { return m_threshold; }            ///< Peak threshold.
+  int getThreshold() const { return m_threshold; }              ///< Peak threshold.
   unsigned int getMinDistance() const { return m_minDistance; } ///< Suppression distance (px).
-  unsigned int getMaxPeaks() const { return m_maxPeaks; }     ///< Peak budget.
+  unsigned int getMaxPeaks() const { return m_maxPeaks; }       ///< Peak budget.
 
   /*!
     Peaks of \e M, strongest first.

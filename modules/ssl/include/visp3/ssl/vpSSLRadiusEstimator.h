@@ -41,10 +41,15 @@ public:
   void setRadiusRange(double minRadius, double maxRadius);
   //! Smallest number of the 8 rays that must show the pattern (default 6).
   void setMinDirections(unsigned int n);
+  /*!
+    Camera pixels per image pixel (default 1; 2 on an image upsampled twice). The thinnest ring that can
+    be read is a property of the camera, so the ring-width limits are scaled by it.
+  */
+  void setPixelScale(double scale);
   //! Similarity ratio p of the printed landmark (default 0.5).
   void setP(double p);
-  double getMinRadius() const { return m_minRadius; }          ///< Lower bound of the radius search (px).
-  double getMaxRadius() const { return m_maxRadius; }          ///< Upper bound of the radius search (px).
+  double getMinRadius() const { return m_minRadius; }               ///< Lower bound of the radius search (px).
+  double getMaxRadius() const { return m_maxRadius; }               ///< Upper bound of the radius search (px).
   unsigned int getMinDirections() const { return m_minDirections; } ///< Rays needed to accept a landmark.
 
   /*!
@@ -64,7 +69,16 @@ public:
 
 private:
   bool readRays(const vpImage<unsigned char> &I, double u, double v, double maxRadius);
-  bool fitRay(int d, double &radius) const;
+  struct Candidate
+  {
+    double radius;
+    double score;
+  };
+  void rayCandidates(int d, std::vector<Candidate> &candidates) const;
+  bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v) const;
+  bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
+  bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
+                    double R[8], bool ok[8]);
   double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
   bool ringEdge(int d, double expected, double halfWidth, double &position) const;
 
@@ -73,9 +87,12 @@ private:
   unsigned int m_minDirections;
   double m_p;
   double m_step;
+  double m_pixelScale;
   // Per-ray profiles and their prefix sums, reused between candidates.
   std::vector<float> m_profile[8];
   std::vector<double> m_prefix[8];
+  mutable std::vector<double> m_grid, m_scores; // radius search scratch
+  std::vector<Candidate> m_candidates[8];
 };
 
 #endif

@@ -17,10 +17,10 @@
 */
 struct VISP_SSL_EXPORT vpSSLTargetMatch
 {
-  bool found = false;            ///< True when at least the biggest landmark was identified.
-  unsigned int nbMatched = 0;    ///< How many of the target's landmarks were matched (the paper's nbPoints).
-  std::vector<int> detection;    ///< For each target landmark, the index of its detection, or -1.
-  double residual = 0.;          ///< Mean geometric residual of the match (relative to the big radius).
+  bool found = false;         ///< True when at least the biggest landmark was identified.
+  unsigned int nbMatched = 0; ///< How many of the target's landmarks were matched (the paper's nbPoints).
+  std::vector<int> detection; ///< For each target landmark, the index of its detection, or -1.
+  double residual = 0.;       ///< Mean geometric residual of the match (relative to the big radius).
 };
 
 /*!
