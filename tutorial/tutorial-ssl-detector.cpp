@@ -229,10 +229,16 @@ int main(int argc, char **argv)
         fail(cameraFile + ": cannot read camera file", 2);
       }
       vpXmlParserCamera parser;
-      if (parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithDistortion) !=
-              vpXmlParserCamera::SEQUENCE_OK &&
-          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithoutDistortion) !=
-              vpXmlParserCamera::SEQUENCE_OK) {
+      // vpXmlParserCamera chats on standard output, which carries only JSON here: silence it.
+      std::ostringstream chatter;
+      std::streambuf *out = std::cout.rdbuf(chatter.rdbuf());
+      const bool parsed =
+          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithDistortion) ==
+              vpXmlParserCamera::SEQUENCE_OK ||
+          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithoutDistortion) ==
+              vpXmlParserCamera::SEQUENCE_OK;
+      std::cout.rdbuf(out);
+      if (!parsed) {
         fail(cameraFile + ": no camera named \"" + cameraName + "\" with a perspective projection", 2);
       }
       if (!(cam.get_px() > 0. && cam.get_py() > 0.)) {
@@ -258,7 +264,7 @@ int main(int argc, char **argv)
   if (isSequence) {
     try {
       reader.setFileName(input);
-      reader.open(I);
+      reader.open(I); // reads the first frame; acquire() below starts from it again
     } catch (const vpException &e) {
       fail(input + ": cannot open sequence: " + e.getStringMessage(), 1);
     }
@@ -266,20 +272,18 @@ int main(int argc, char **argv)
   for (bool done = false; !done; ++frame) {
     std::string name;
     if (isSequence) {
-      if (frame > 0) {
-        if (reader.end() || (maxFrames >= 0 && frame >= maxFrames)) {
-          break;
-        }
-        reader.acquire(I);
+      if (reader.end() || (maxFrames >= 0 && frame >= maxFrames)) {
+        break;
       }
+      reader.acquire(I);
       name = vpIoTools::getName(reader.getFrameName());
     } else {
       done = true;
       name = vpIoTools::getName(input);
       try {
         vpImageIo::read(I, input);
-      } catch (const vpException &e) {
-        std::string why = "cannot read image";
+      } catch (const vpException &) {
+        const std::string why = "cannot read image";
         std::cerr << "tutorial-ssl-detector: " << input << ": " << why << std::endl;
         if (json) {
           std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(why) << "}" << std::endl;

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# End-to-end check of tutorial-ssl-detector: --help, the JSON Lines contract (../shared/spec/detect-json.md),
+# annotated output, and one-line errors with the documented exit codes.
+# Usage: detector.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
+set -u
+bin="$1/tutorial-ssl-detector"
+data="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$bin" --help > "$work/help" || fail "--help exit code"
+for opt in --input --camera --camera-name --target --json --output --display --window --threshold --no-normalize \
+           --threads --max-frames --help; do
+  grep -q -- "$opt" "$work/help" || fail "--help does not mention $opt"
+done
+
+# A sequence of the demo images with a camera: one JSON object per image on stdout, nothing else.
+"$bin" --input "$data/images/ssl3-a3-%02d.png" --camera "$data/camera/camera-640x480.xml" --json \
+  --output "$work/out" > "$work/seq.jsonl" 2> "$work/seq.err" || fail "sequence exit code $?"
+[ "$(wc -l < "$work/seq.jsonl")" -eq 4 ] || fail "expected 4 JSON lines, got $(wc -l < "$work/seq.jsonl")"
+for i in 00 01 02 03; do [ -f "$work/out/ssl3-a3-$i.png" ] || fail "annotated image $i missing"; done
+python3 - "$work/seq.jsonl" <<'PY' || fail "JSON contract"
+import json, sys
+lines = open(sys.argv[1]).read().splitlines()
+for n, line in enumerate(lines):
+    o = json.loads(line)
+    for k in ("image", "width", "height", "time_ms", "landmarks", "target"):
+        assert k in o, (n, k)
+    assert o["image"] == "ssl3-a3-%02d.png" % n, o["image"]
+    assert (o["width"], o["height"]) == (640, 480)
+    scores = [l["score"] for l in o["landmarks"]]
+    assert scores == sorted(scores, reverse=True), "landmarks not best score first"
+    for l in o["landmarks"]:
+        assert set(l) >= {"u", "v", "radius_px", "score"} and 0 <= l["score"] <= 1
+    t = o["target"]
+    assert t["found"] is True and "cMo" in t and "range_m" in t, t
+    assert set(t["landmarks"]) <= {"B", "S1", "S2"} and "B" in t["landmarks"]
+    assert t["n_landmarks"] == len(t["landmarks"])
+first, last = json.loads(lines[0]), json.loads(lines[-1])
+assert first["target"]["n_landmarks"] == 3, first
+assert last["target"]["n_landmarks"] == 1, last        # 2 m: only the big landmark is large enough
+assert abs(last["target"]["range_m"] - 2.0) < 0.15, last  # Eq. 6 (to B's centre)
+PY
+
+# Without a camera there is no range and no pose.
+"$bin" --input "$data/images/ssl3-a3-00.png" --json > "$work/one.json" 2>/dev/null || fail "single image exit code"
+python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["cMo"] is None and t["range_m"] is None' \
+  "$work/one.json" || fail "no camera: cMo and range_m must be null"
+
+# A file with no landmark: target not found, exactly as the spec writes it.
+python3 -c 'import sys; open(sys.argv[1],"wb").write(b"P5\n64 48\n255\n" + bytes([128]*64*48))' "$work/grey.pgm"
+"$bin" --input "$work/grey.pgm" --json > "$work/grey.json" 2>/dev/null || fail "grey image exit code"
+grep -q '"target": {"found": false, "n_landmarks": 0}' "$work/grey.json" || fail "not-found record: $(cat "$work/grey.json")"
+
+# An unreadable image: an error record, one line on stderr, exit status 1.
+echo "not an image" > "$work/broken.png"
+"$bin" --input "$work/broken.png" --json > "$work/broken.json" 2> "$work/broken.err"
+[ $? -eq 1 ] || fail "unreadable image must exit 1"
+python3 -c 'import json,sys; o=json.load(open(sys.argv[1])); assert o["image"]=="broken.png" and "error" in o' \
+  "$work/broken.json" || fail "error record: $(cat "$work/broken.json")"
+[ "$(grep -c . "$work/broken.err")" -ge 1 ] || fail "no message on stderr"
+
+# Bad camera file, bad target file, bad option: exit 2 with one line on stderr naming the problem.
+echo "<root><camera><name>Other</name></camera></root>" > "$work/cam.xml"
+"$bin" --input "$data/images/ssl3-a3-00.png" --camera "$work/cam.xml" > /dev/null 2> "$work/cam.err"
+[ $? -eq 2 ] || fail "bad camera file must exit 2"
+[ "$(wc -l < "$work/cam.err")" -eq 1 ] && grep -q "cam.xml" "$work/cam.err" || fail "camera error: $(cat "$work/cam.err")"
+printf 'name t\nlandmark B 0 0 0 abc\n' > "$work/bad-target.txt"
+"$bin" --input "$data/images/ssl3-a3-00.png" --target "$work/bad-target.txt" > /dev/null 2> "$work/target.err"
+[ $? -eq 2 ] || fail "bad target file must exit 2"
+[ "$(wc -l < "$work/target.err")" -eq 1 ] && grep -q "bad-target.txt:2" "$work/target.err" ||
+  fail "target error: $(cat "$work/target.err")"
+"$bin" --input x --window 500 > /dev/null 2> "$work/opt.err"
+[ $? -eq 2 ] && [ "$(wc -l < "$work/opt.err")" -eq 1 ] || fail "bad window: $(cat "$work/opt.err")"
+"$bin" > /dev/null 2>&1
+[ $? -eq 2 ] || fail "missing --input must exit 2"
+echo "e2e detector: ok"
