@@ -42,7 +42,7 @@ TEST(Identification, LabelsBS1S2InRenderedViews)
 {
   vpSSLDetector detector;
   const char *names[3] = {"B", "S1", "S2"};
-  for (double d : {1.0, 1.4}) {
+  for (double d : {0.9, 1.2}) {
     for (double tilt : {0., 20., 35.}) {
       for (double roll : {0., 70., 160., 250., 320.}) {
         const double axis = roll * 0.7;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <visp3/core/vpException.h>
 
@@ -25,6 +26,8 @@ const double kSolidRing = 0.85;
 // Radius (px) of the disc compared with its half-turn to centre a candidate: the innermost rings, which
 // every landmark has whatever its size.
 const double kSymmetryRadius = 8.;
+// Largest residual of that comparison, relative to the disc's variance (clutter is near 1).
+const double kMaxAsymmetry = 0.6;
 // Share of the best level's total score that an outer level needs to be taken for the landmark's.
 const double kLevelShare = 0.7;
 // Alternating ring pairs a ray must show, blur permitting (fewer only when fewer rings are resolvable).
@@ -269,13 +272,33 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   }
   black /= nbBlack;
   white /= nbWhite;
-  if (std::fabs(level[0] - black) > kInkTolerance * (white - black)) {
+  if (std::fabs(level[0] - black) > kInkTolerance * (white - black) || !solidRings(d, radius)) {
     return -1e30;
   }
+  return score;
+}
+
+bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
+{
+  const std::vector<float> &P = m_profile[d];
+  const double q = std::sqrt(m_p);
+  // Mid level between the two outer rings, from their middle halves.
+  double level[2];
+  for (int k = 0; k < 2; ++k) {
+    const double outer = radius * std::pow(q, k), inner = outer * q, margin = 0.25 * (outer - inner);
+    const size_t i0 = static_cast<size_t>(std::ceil((inner + margin) / m_step));
+    const size_t i1 = std::min(P.size() - 1, static_cast<size_t>(std::floor((outer - margin) / m_step)));
+    double sum = 0.;
+    size_t n = 0;
+    for (size_t i = i0; i <= i1; ++i, ++n) {
+      sum += P[i];
+    }
+    level[k] = n > 0 ? sum / n : 0.;
+  }
+  const double mid = 0.5 * (level[0] + level[1]);
   // The two outer rings are printed solid: away from their blurred edges nearly every sample must be on
   // their side of the mid level. A neighbouring landmark's ring or the sheet's edge that happens to
   // darken part of the band beyond a landmark is not.
-  const double mid = 0.5 * (black + white);
   for (int k = 0; k < 2; ++k) {
     const double outer = radius * std::pow(q, k), inner = outer * q;
     const double margin = 0.25 * (outer - inner);
@@ -288,20 +311,28 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       right += ((value < mid) == (k == 0)) ? 1 : 0;
     }
     if (n > 0 && right < kSolidRing * n) {
-      return -1e30;
+      return false;
     }
   }
-  return score;
+  return true;
 }
 
-void vpSSLRadiusEstimator::rayCandidates(int d, std::vector<Candidate> &candidates) const
+void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidate> &candidates) const
 {
   candidates.clear();
   const double available = (m_profile[d].size() - 1) * m_step;
   const double rMax = std::min(m_maxRadius, available);
   std::vector<double> &grid = m_grid, &scores = m_scores;
   grid.clear();
+  const double logStep = std::log(1. / m_p);
   for (double r = m_minRadius; r <= rMax; r *= kGridRatio) {
+    // Given a first reading, only the p-similar levels around it are worth a look.
+    if (ref > 0.) {
+      const double x = std::log(r / ref) / logStep;
+      if (std::fabs(x - std::round(x)) > 0.3) {
+        continue;
+      }
+    }
     grid.push_back(r);
   }
   scores.assign(grid.size(), -1e30);
@@ -325,7 +356,10 @@ void vpSSLRadiusEstimator::rayCandidates(int d, std::vector<Candidate> &candidat
   // the clutter around it makes of R / p. The rays decide together (estimate()).
   for (size_t i = 0; i < grid.size(); ++i) {
     const double b = scores[i];
-    const double a = i > 0 ? scores[i - 1] : -1e30, c = i + 1 < grid.size() ? scores[i + 1] : -1e30;
+    // Neighbours on the grid only (the level windows leave gaps in it).
+    const bool left = i > 0 && grid[i - 1] > grid[i] / (1.5 * kGridRatio);
+    const bool right = i + 1 < grid.size() && grid[i + 1] < grid[i] * 1.5 * kGridRatio;
+    const double a = left ? scores[i - 1] : -1e30, c = right ? scores[i + 1] : -1e30;
     if (b <= -1e29 || a > b || c >= b) {
       continue;
     }
@@ -388,8 +422,15 @@ bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, do
 bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8], double &scale)
 {
   std::vector<Candidate> *candidates = m_candidates;
-  for (int d = 0; d < 8; ++d) {
-    rayCandidates(d, candidates[d]);
+  // Opposite rays first, so that clutter is given up on after a few rays rather than all eight.
+  const int order[8] = {0, 4, 2, 6, 1, 5, 3, 7};
+  unsigned int empty = 0;
+  for (int d : order) {
+    rayCandidates(d, ref ? ref[d] : 0., candidates[d]);
+    empty += candidates[d].empty() ? 1 : 0;
+    if (empty > 8 - m_minDirections) {
+      return false;
+    }
   }
   if (ref == nullptr) {
     // From the matching peak, which may sit a few pixels off the centre for a landmark smaller than the
@@ -574,7 +615,8 @@ bool vpSSLRadiusEstimator::refineCentre(const vpImage<unsigned char> &I, double 
   return true;
 }
 
-bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v) const
+bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v,
+                                          double &asymmetry) const
 {
   // The landmark is point-symmetric, and stays so under any affine view, symmetric blur and noise: its
   // centre minimises the difference between the image and its half-turn about it. Centres on the
@@ -585,10 +627,12 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
   const int cu = static_cast<int>(std::lround(2. * u)), cv = static_cast<int>(std::lround(2. * v));
   if (cu - reach < 2 * radius || cv - reach < 2 * radius || cu + reach > 2 * (W - 1 - radius) ||
       cv + reach > 2 * (H - 1 - radius)) {
+    asymmetry = 0.;
     return false; // too close to the border to compare both halves: keep the peak
   }
   double E[2 * reach + 1][2 * reach + 1];
-  int bi = reach, bj = reach;
+  int bi = 0, bj = 0;
+  double bestE = std::numeric_limits<double>::max();
   for (int j = -reach; j <= reach; ++j) {
     for (int i = -reach; i <= reach; ++i) {
       const int su = cu + i, sv = cv + j; // twice the centre
@@ -606,11 +650,10 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
         }
       }
       E[j + reach][i + reach] = e;
-      if (e < E[bj + reach][bi + reach] || (i == -reach && j == -reach)) {
-        if (!(i == -reach && j == -reach) || true) {
-          bi = i;
-          bj = j;
-        }
+      if (e < bestE) {
+        bestE = e;
+        bi = i;
+        bj = j;
       }
     }
   }
@@ -627,13 +670,42 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
   }
   u = 0.5 * (cu + bi + du);
   v = 0.5 * (cv + bj + dv);
+  // Residual relative to the disc's own contrast: 0 for a perfectly symmetric pattern, about 1 for clutter.
+  double sum = 0., sum2 = 0.;
+  int n = 0;
+  const int pu = (cu + bi) >> 1, pv = (cv + bj) >> 1;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    for (int dx = -radius; dx <= radius; ++dx) {
+      if (dx * dx + dy * dy <= radius * radius) {
+        const double g = I[pv + dy][pu + dx];
+        sum += g;
+        sum2 += g * g;
+        ++n;
+      }
+    }
+  }
+  const double variance = sum2 / n - (sum / n) * (sum / n);
+  asymmetry = E[bj + reach][bi + reach] / (0.5 * n * 2. * std::max(variance, 1.));
   return true;
 }
 
 bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
 {
-  double u = landmark.u, v = landmark.v, scale = 0.;
-  symmetryCentre(I, u, v);
+  double u = landmark.u, v = landmark.v, scale = 0., asymmetry = 0.;
+  // Clutter is seldom point-symmetric: most matching peaks end here, before any ring is read. The peak
+  // of a landmark smaller than the window can sit a few pixels off: follow the symmetry until it settles.
+  for (int iter = 0; iter < 3; ++iter) {
+    const double u0 = u, v0 = v;
+    if (!symmetryCentre(I, u, v, asymmetry)) {
+      break;
+    }
+    if (std::fabs(u - u0) < 2.5 && std::fabs(v - v0) < 2.5) {
+      break;
+    }
+  }
+  if (asymmetry > kMaxAsymmetry) {
+    return false;
+  }
   double R[8];
   bool ok[8];
   // 1. From the matching peak: a first reading of each ray, and the centre from the ring edges.

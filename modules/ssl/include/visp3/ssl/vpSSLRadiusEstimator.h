@@ -74,12 +74,13 @@ private:
     double radius;
     double score;
   };
-  void rayCandidates(int d, std::vector<Candidate> &candidates) const;
-  bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v) const;
+  void rayCandidates(int d, double ref, std::vector<Candidate> &candidates) const;
+  bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry) const;
   bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
   bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
                     double R[8], bool ok[8]);
   double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
+  bool solidRings(int d, double radius) const;
   bool ringEdge(int d, double expected, double halfWidth, double &position) const;
 
   double m_minRadius;
