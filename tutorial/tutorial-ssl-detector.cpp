@@ -32,7 +32,8 @@ Options:
   --json              Print one JSON object per image on standard output (JSON Lines,
                       ../shared/spec/detect-json.md); everything else goes to stderr.
   --output DIR        Write annotated images DIR/<image name>.png (default when no window
-                      is shown: ssl-detections).
+                      is shown: ssl-detections). Outlines: B green, S1 cyan, S2 purple,
+                      landmarks outside the target orange; red crosses at the centres.
   --display           Show the detections in a window (needs an X display).
   --window W          Window length of the matching function, in [2, 128] (default 40).
   --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.12).
@@ -138,12 +139,17 @@ std::string toJson(const std::string &name, const vpImage<unsigned char> &I, con
 void annotate(const vpImage<unsigned char> &I, vpSSLDetector &detector, vpImage<vpRGBa> &out)
 {
   vpImageConvert::convert(I, out);
+  // Unmatched landmarks in orange; the target's in one colour per label (B, S1, S2, ... in target order).
+  const vpColor labelColors[] = {vpColor::green, vpColor::cyan, vpColor::purple, vpColor::yellow, vpColor::blue};
   for (size_t i = 0; i < detector.getNbObjects(); ++i) {
-    const bool matched = detector.getMessage(i) != "ssl";
-    const vpColor color = matched ? vpColor::green : vpColor::orange;
+    vpColor color = vpColor::orange;
+    for (size_t k = 0; k < detector.getTarget().size(); ++k) {
+      if (detector.getMatchedLandmark(k) == &detector.getLandmarks()[i]) {
+        color = labelColors[k % 5];
+      }
+    }
     vpImageDraw::drawPolygon(out, detector.getPolygon(i), color, 2, true);
-    const vpSSLLandmark &l = detector.getLandmarks()[i];
-    vpImageDraw::drawCross(out, l.getCenter(), 10, vpColor::red, 1);
+    vpImageDraw::drawCross(out, detector.getLandmarks()[i].getCenter(), 10, vpColor::red, 1);
   }
 }
 
@@ -215,15 +221,15 @@ int main(int argc, char **argv)
     outputDir = "ssl-detections";
   }
 
-  vpSSLDetector *detectorPtr = nullptr;
+  // Everything the user gave is checked before the detector exists, so that an error exits cleanly.
   vpCameraParameters cam;
   bool haveCamera = false;
+  vpSSLTarget target;
   try {
-    detectorPtr = new vpSSLDetector(vpSSLTarget::fromName(targetName));
-    detectorPtr->setWindow(window);
-    detectorPtr->setThreshold(threshold);
-    detectorPtr->setBrightnessNormalization(normalize);
-    detectorPtr->setNbThreads(threads);
+    target = vpSSLTarget::fromName(targetName);
+    vpSSLDetector check(target); // the settings' own checks, with their messages
+    check.setWindow(window);
+    check.setThreshold(threshold);
     if (!cameraFile.empty()) {
       if (!vpIoTools::checkFilename(cameraFile)) {
         fail(cameraFile + ": cannot read camera file", 2);
@@ -249,7 +255,11 @@ int main(int argc, char **argv)
   } catch (const vpException &e) {
     fail(e.getStringMessage(), 2);
   }
-  vpSSLDetector &detector = *detectorPtr;
+  vpSSLDetector detector(target);
+  detector.setWindow(window);
+  detector.setThreshold(threshold);
+  detector.setBrightnessNormalization(normalize);
+  detector.setNbThreads(threads);
   if (!outputDir.empty()) {
     vpIoTools::makeDirectory(outputDir);
   }
@@ -266,7 +276,9 @@ int main(int argc, char **argv)
       reader.setFileName(input);
       reader.open(I); // reads the first frame; acquire() below starts from it again
     } catch (const vpException &e) {
-      fail(input + ": cannot open sequence: " + e.getStringMessage(), 1);
+      std::cerr << "tutorial-ssl-detector: " << input << ": cannot open sequence: " << e.getStringMessage()
+                << std::endl;
+      return 1;
     }
   }
   for (bool done = false; !done; ++frame) {
@@ -331,6 +343,5 @@ int main(int argc, char **argv)
   std::cerr << "tutorial-ssl-detector: " << frame << " image(s), target found in " << nbFound
             << (outputDir.empty() ? "" : ", annotated images in " + outputDir + "/") << std::endl;
   delete window_;
-  delete detectorPtr;
   return status;
 }
