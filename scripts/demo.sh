@@ -19,7 +19,8 @@ if [ ! -f tutorial/tutorial-ssl-detector.cpp ]; then
   echo "demo: tutorial/tutorial-ssl-detector.cpp does not exist yet: the detector tutorial is not written" >&2
   exit 1
 fi
-run_logged build/demo-build.log cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+run_logged build/demo-build.log cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DVISP_SSL_SANITIZE=OFF \
+  -DVISP_SSL_BUILD_TUTORIALS=ON
 run_logged build/demo-build.log cmake --build build -j"$JOBS" --target tutorial-ssl-detector
 detector=build/tutorial/tutorial-ssl-detector
 if [ ! -x "$detector" ]; then

@@ -31,7 +31,9 @@ bash scripts/setup-deps.sh
 
 phase "configure and build, Release (build/)"
 rm -f build/build.log
-run_logged build/build.log cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+# Every option spelled out: a build/ tree left configured otherwise by hand must not skip anything.
+run_logged build/build.log cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DVISP_SSL_SANITIZE=OFF \
+  -DVISP_SSL_BUILD_TESTS=ON -DVISP_SSL_BUILD_TUTORIALS=ON -DVISP_SSL_BUILD_BENCHMARKS=ON
 run_logged build/build.log cmake --build build -j"$JOBS"
 
 phase "ctest, Release"
@@ -49,7 +51,7 @@ if [ "$sanitize" -eq 1 ]; then
   phase "configure and build, ASan+UBSan (build-asan/)"
   rm -f build-asan/build.log
   run_logged build-asan/build.log cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISP_SSL_SANITIZE=ON \
-    -DVISP_SSL_BUILD_BENCHMARKS=OFF -DVISP_SSL_BUILD_TUTORIALS=ON
+    -DVISP_SSL_BUILD_TESTS=ON -DVISP_SSL_BUILD_TUTORIALS=ON -DVISP_SSL_BUILD_BENCHMARKS=OFF
   run_logged build-asan/build.log cmake --build build-asan -j"$JOBS"
 
   phase "ctest, ASan+UBSan"
