@@ -1,9 +1,12 @@
 //! \example tutorial-ssl-simulate-sequence.cpp
 //! Writes a simulated underwater sequence (images, ground truth, odometry) in the recorded-sequence format.
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -230,6 +233,7 @@ int main(int argc, char **argv)
     if (output.empty()) {
       throw vpException(vpException::badValue, "--output DIR is required (see --help)");
     }
+
     scenario = vpSSLScenario(scenarioName);
     scenario.setFrames(nbFrames, fps);
     scenario.setSeed(seed);
@@ -242,6 +246,12 @@ int main(int argc, char **argv)
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-simulate-sequence: " << e.getStringMessage() << std::endl;
     return EXIT_FAILURE;
+  }
+  std::error_code ec;
+  if (!overwrite && std::filesystem::is_directory(output, ec) && !std::filesystem::is_empty(output, ec)) {
+    std::cerr << "tutorial-ssl-simulate-sequence: " << output
+              << ": folder is not empty (use --overwrite to replace the sequence in it)" << std::endl;
+    return 2;
   }
 
   // The scene: target sheet, backdrop, water surface.
@@ -268,6 +278,13 @@ int main(int argc, char **argv)
     return EXIT_FAILURE;
   }
   background.apply(renderer);
+  // Beyond the range where the clearest channel's direct signal has fallen by 1e5, nothing is left of it, even
+  // at the auto exposure's largest gain (255 x 64 x 1e-5 < half a grey level): the renderer stops the rays there.
+  const std::array<double, 3> &betaD = water.getAttenuation();
+  const double clearest = std::min({betaD[0], betaD[1], betaD[2]});
+  if (clearest > 0.) {
+    renderer.setMaxRange(std::log(1e5) / clearest);
+  }
   const vpHomogeneousMatrix wMb = background.getWorldPose(scenario);
   // Ground truth is the pose of the target frame: for an AprilTag, vpDetectorAprilTag's tag frame.
   const vpHomogeneousMatrix sMo = aprilTag ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();

@@ -72,7 +72,8 @@ inline double subOffset(unsigned int i, unsigned int n)
 vpSSLRenderer::vpSSLRenderer(const vpCameraParameters &cam, unsigned int width, unsigned int height)
     : m_cam(cam), m_width(width), m_height(height), m_supersampling(4), m_target(), m_black(0.), m_white(1.),
       m_background(0.5), m_aprilTag(false), m_tagSheet(), m_backdrop(), m_texelSize(0.01), m_oMb(), m_hasSurface(false),
-      m_surface(), m_fovMinX(0.), m_fovMaxX(0.), m_fovMinY(0.), m_fovMaxY(0.)
+      m_surface(), m_maxRange(std::numeric_limits<double>::infinity()), m_fovMinX(0.), m_fovMaxX(0.), m_fovMinY(0.),
+      m_fovMaxY(0.)
 {
   if (width == 0 || height == 0) {
     throw vpException(vpException::dimensionError, "vpSSLRenderer: image size %ux%u has no pixel", width, height);
@@ -134,8 +135,8 @@ void vpSSLRenderer::setBackdrop(const vpImage<unsigned char> &texture, double te
     for (unsigned int v = 0; v < coarse.getHeight(); ++v) {
       for (unsigned int u = 0; u < coarse.getWidth(); ++u) {
         const unsigned int u1 = std::min(2 * u + 1, w - 1), v1 = std::min(2 * v + 1, h - 1);
-        coarse[v][u] = static_cast<unsigned char>(
-            (fine[2 * v][2 * u] + fine[2 * v][u1] + fine[v1][2 * u] + fine[v1][u1] + 2) / 4);
+        coarse[v][u] =
+            static_cast<unsigned char>((fine[2 * v][2 * u] + fine[2 * v][u1] + fine[v1][2 * u] + fine[v1][u1] + 2) / 4);
       }
     }
     m_backdrop.push_back(coarse);
@@ -161,6 +162,14 @@ void vpSSLRenderer::setWaterSurface(const vpPlane &surface)
 void vpSSLRenderer::clearWaterSurface()
 {
   m_hasSurface = false;
+}
+
+void vpSSLRenderer::setMaxRange(double range)
+{
+  if (!(range > 0.)) {
+    throw vpException(vpException::badValue, "vpSSLRenderer: maximum range %g m must be > 0", range);
+  }
+  m_maxRange = range;
 }
 
 void vpSSLRenderer::setSupersampling(unsigned int n)
@@ -442,6 +451,12 @@ double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3]
         best = tw;
       }
     }
+  }
+  // Beyond the maximum range (path lengths in metres: t |d|), a miss.
+  if (what != MISS &&
+      (path0 + best) * (path0 + best) * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) > m_maxRange * m_maxRange) {
+    what = MISS;
+    best = std::numeric_limits<double>::infinity();
   }
   t = best;
   switch (what) {

@@ -22,13 +22,12 @@ struct ScenarioInfo
 };
 
 const ScenarioInfo kScenarios[] = {
-    {"approach", 10., 0.5, "straight approach from 10 m to 0.5 m, slight weave and attitude wobble"},
-    {"orbit", 3., 3., "arc from 60 deg left to 60 deg right of the target's axis at a constant 3 m"},
-    {"spiral", 8., 1.5,
-     "descending spiral: from 1.2 m above the target to its level, 1.5 turns around its axis, 8 m to 1.5 m"},
-    {"leave-return", 4., 3., "at 4 m to 3 m the vehicle turns 80 deg away (target out of view) and back"},
-    {"left-right", 2., 2., "paper Fig. 8: 2 m stand-off, target moved 0.8 m left, then right, then back"},
-    {"reflection", 6., 1.5, "paper Sec. 3.1: target 0.45 m below a calm surface and its mirror image, 6 m to 1.5 m"},
+    {"approach", 10., 0.5, "straight approach from 10 m to 0.5 m, slight weave"},
+    {"orbit", 3., 3., "arc from 60 deg left to 60 deg right at a constant 3 m"},
+    {"spiral", 8., 1.5, "descending spiral around the target's axis, 8 m to 1.5 m"},
+    {"leave-return", 4., 3., "turns 80 deg away (target out of view) and back, 4 m to 3 m"},
+    {"left-right", 2., 2., "paper Fig. 8: target moved left, right and back at 2 m"},
+    {"reflection", 6., 1.5, "paper Sec. 3.1: target below a calm surface, 6 m to 1.5 m"},
 };
 
 const ScenarioInfo &findScenario(const std::string &name)

@@ -42,6 +42,7 @@
     Fresnel reflectance of water to air, total beyond the critical angle of 48.6 degrees from the normal
     (paper Sec. 3.1: the target's mirror image, of opposite handedness), and otherwise also sees the
     bright sky through Snell's window. The range of a reflected ray is its whole path in the water.
+  - setMaxRange() stops the rays where the water has left nothing of the signal.
 
   Rows are rendered in parallel (OpenMP); a 640 x 480 frame at 16 samples per pixel costs about
   60 ms on one core when the target fills it, far less when it is small.
@@ -104,6 +105,16 @@ public:
   void setWaterSurface(const vpPlane &surface);
   //! Removes the water surface.
   void clearWaterSurface();
+  /*!
+    Range (m, along the ray, reflections included) beyond which nothing is drawn: the ray is a miss, with an
+    infinite range. Default: infinity. Water that leaves less than half a grey level of the direct signal at
+    some range (vpSSLWaterModel) makes everything farther pure veiling light: cutting the rays there gives
+    the same image, and spares the texture lookups and the water model's blur of a seabed reaching the horizon.
+    \exception vpException if not > 0.
+  */
+  void setMaxRange(double range);
+  //! See setMaxRange().
+  double getMaxRange() const { return m_maxRange; }
 
   //! The SSL target printed on the sheet.
   const vpSSLTarget &getTarget() const { return m_target; }
@@ -125,7 +136,7 @@ public:
   void render(const vpHomogeneousMatrix &cMo, vpImage<float> &reflectance, vpImage<float> &range) const;
 
   //! Projection of the landmark centres at cMo, in pixels (distortion included), in target order; a centre
-  //! behind the camera (Z <= 0) gets NaN coordinates.
+  //! behind the camera (Z <= 0) gets NaN coordinates. For an AprilTag sheet, its four corners.
   std::vector<vpImagePoint> projectLandmarks(const vpHomogeneousMatrix &cMo) const;
   /*!
     Whether some of the printed side of the sheet is in the image at cMo: a 17 x 13 grid of points over the
@@ -147,8 +158,8 @@ private:
   struct Scene;
   void renderCore(const vpHomogeneousMatrix &cMo, float *reflectance, float *range, unsigned char *grey) const;
   Scene makeScene(const vpHomogeneousMatrix &cMo) const;
-  double shade(const Scene &scene, const double p[3], const double d[3], double background, bool surface,
-               double path0, double &t) const;
+  double shade(const Scene &scene, const double p[3], const double d[3], double background, bool surface, double path0,
+               double &t) const;
   double sheetValue(double X, double Y) const;
   double backdropValue(double a, double b, double footprint) const;
   vpHomogeneousMatrix sheetPose() const;
@@ -169,11 +180,12 @@ private:
   vpSSLAprilTagSheet m_tagSheet;
   //! Backdrop texture and its box-filtered pyramid (level k has 2^k texels per texel of level 0), so that a
   //! distant backdrop is sampled at its footprint: no aliasing, and few cache misses.
-  std::vector<vpImage<unsigned char> > m_backdrop;
+  std::vector<vpImage<unsigned char>> m_backdrop;
   double m_texelSize;
   vpHomogeneousMatrix m_oMb;
   bool m_hasSurface;
   vpPlane m_surface;
+  double m_maxRange;
   //! Undistorted normalised coordinates spanned by the image border, so that isTargetInView() does not take
   //! a point far outside the field of view, folded back by a distortion polynomial, for a visible one.
   double m_fovMinX, m_fovMaxX, m_fovMinY, m_fovMaxY;
