@@ -279,7 +279,9 @@ TEST_F(SequenceIo, unknownExtraColumnsAreKeptByNameAndOtherwiseIgnored)
 TEST_F(SequenceIo, writtenSequencePassesTheSharedChecker)
 {
   const char *env = std::getenv("VISP_SSL_CHECK_SEQUENCE");
+  // The project's shared/ sits beside the clone (CI and developers alike).
   std::vector<fs::path> candidates = {fs::path(VISP_SSL_DATA_DIR) / ".." / "scripts" / "check-sequence",
+                                      fs::path(VISP_SSL_DATA_DIR) / ".." / ".." / "shared" / "tools" / "check-sequence",
                                       "/work/shared/tools/check-sequence"};
   if (env)
     candidates.insert(candidates.begin(), env);

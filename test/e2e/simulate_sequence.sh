@@ -22,7 +22,8 @@ pass() { echo "ok: $*"; }
 
 # The shared sequence-format checker, where this machine has it.
 CHECKER=""
-for c in "${VISP_SSL_CHECK_SEQUENCE:-}" "$DATA/../scripts/check-sequence" /work/shared/tools/check-sequence; do
+for c in "${VISP_SSL_CHECK_SEQUENCE:-}" "$DATA/../scripts/check-sequence" "$DATA/../../shared/tools/check-sequence" \
+  /work/shared/tools/check-sequence; do
   if [ -n "$c" ] && [ -f "$c" ]; then CHECKER="$c"; break; fi
 done
 check_format() {
