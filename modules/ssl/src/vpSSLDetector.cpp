@@ -22,14 +22,16 @@ void upsample2(const vpImage<unsigned char> &I, vpImage<unsigned char> &O)
   for (int v = 0; v < 2 * H; ++v) {
     const int v0 = (v - 1) >> 1, v1 = std::min(H - 1, v0 + 1);
     const int wv1 = (v & 1) ? 3 : 1; // weight of row v0 in quarters
-    const int r0 = std::max(0, v0);
+    const unsigned char *top = I[std::max(0, v0)], *bottom = I[v1];
+    unsigned char *out = O[v];
+    // Column 0 repeats column 0; odd columns weigh 3:1, even ones 1:3 the pair (u0, u0 + 1).
     for (int u = 0; u < 2 * W; ++u) {
       const int u0 = (u - 1) >> 1, u1 = std::min(W - 1, u0 + 1);
       const int wu1 = (u & 1) ? 3 : 1;
       const int c0 = std::max(0, u0);
-      const int top = wu1 * I[r0][c0] + (4 - wu1) * I[r0][u1];
-      const int bottom = wu1 * I[v1][c0] + (4 - wu1) * I[v1][u1];
-      O[v][u] = static_cast<unsigned char>((wv1 * top + (4 - wv1) * bottom + 8) >> 4);
+      const int t = wu1 * top[c0] + (4 - wu1) * top[u1];
+      const int b = wu1 * bottom[c0] + (4 - wu1) * bottom[u1];
+      out[u] = static_cast<unsigned char>((wv1 * t + (4 - wv1) * b + 8) >> 4);
     }
   }
 }
@@ -135,6 +137,22 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
   m_radiusEstimator.setPixelScale(scale);
   for (const vpSSLPeak &peak : m_peaks) {
+    // Landmarks do not overlap, so a peak inside one already found (peaks come strongest first) is on its
+    // rings, not another landmark's centre: most peaks are, and reading their rays is the dearest stage.
+    const double pu = m_upsample ? 0.5 * (peak.u + 0.5) - 0.5 : peak.u;
+    const double pv = m_upsample ? 0.5 * (peak.v + 0.5) - 0.5 : peak.v;
+    bool inside = false;
+    for (const vpSSLLandmark &k : m_landmarks) {
+      const double c = std::cos(k.theta), s = std::sin(k.theta), du = pu - k.u, dv = pv - k.v;
+      const double x = (c * du + s * dv) / k.radius, y = (c * dv - s * du) / k.minorRadius;
+      if (x * x + y * y < 1.) {
+        inside = true;
+        break;
+      }
+    }
+    if (inside) {
+      continue;
+    }
     vpSSLLandmark l;
     l.u = peak.u;
     l.v = peak.v;
@@ -231,7 +249,7 @@ std::vector<vpFeaturePoint> vpSSLDetector::getFeaturePoints(const vpCameraParame
     if (l == nullptr) {
       continue;
     }
-    double x, y;
+    double x = 0., y = 0.;
     vpPixelMeterConversion::convertPoint(cam, l->u, l->v, x, y);
     vpFeaturePoint s;
     s.buildFrom(x, y, range(*l, getTarget().getLandmark(k).radius, cam));

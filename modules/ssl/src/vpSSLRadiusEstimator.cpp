@@ -174,24 +174,44 @@ bool vpSSLRadiusEstimator::readRays(const vpImage<unsigned char> &I, double u, d
   if (!(u >= 0. && v >= 0. && u <= W && v <= H)) {
     return false;
   }
+  if (m_rayImage == &I && m_rayU == u && m_rayV == v && m_rayMaxRadius == maxRadius) {
+    return true; // the rays from this centre are still there
+  }
+  // A ray is read when first needed (ray()): most candidates are given up after a few rays.
+  m_rayImage = &I;
+  m_rayU = u;
+  m_rayV = v;
+  m_rayMaxRadius = maxRadius;
   for (int d = 0; d < 8; ++d) {
-    std::vector<float> &P = m_profile[d];
-    std::vector<double> &C = m_prefix[d];
-    P.clear();
-    C.assign(1, 0.);
-    for (double rho = 0.;; rho += m_step) {
-      const double x = u + rho * kCos[d], y = v + rho * kSin[d];
-      if (rho > maxRadius || x < 0. || y < 0. || x > W || y > H) {
-        break;
-      }
-      P.push_back(bilinear(I, x, y));
-      if (P.size() > 1) {
-        // Trapezoidal integral of the profile from 0 to rho.
-        C.push_back(C.back() + 0.5 * m_step * (P[P.size() - 2] + P.back()));
-      }
-    }
+    m_rayRead[d] = false;
   }
   return true;
+}
+
+void vpSSLRadiusEstimator::ray(int d)
+{
+  if (m_rayRead[d]) {
+    return;
+  }
+  m_rayRead[d] = true;
+  const vpImage<unsigned char> &I = *m_rayImage;
+  const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
+  const double u = m_rayU, v = m_rayV;
+  std::vector<float> &P = m_profile[d];
+  std::vector<double> &C = m_prefix[d];
+  P.clear();
+  C.assign(1, 0.);
+  for (double rho = 0.;; rho += m_step) {
+    const double x = u + rho * kCos[d], y = v + rho * kSin[d];
+    if (rho > m_rayMaxRadius || x < 0. || y < 0. || x > W || y > H) {
+      break;
+    }
+    P.push_back(bilinear(I, x, y));
+    if (P.size() > 1) {
+      // Trapezoidal integral of the profile from 0 to rho.
+      C.push_back(C.back() + 0.5 * m_step * (P[P.size() - 2] + P.back()));
+    }
+  }
 }
 
 double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContrast, int &nbPairsOut,
@@ -227,6 +247,14 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       contrast[nb] = ((k - 1) % 2 == 0) ? mean - previous : previous - mean;
       cmax = std::max(cmax, contrast[nb]);
       ++nb;
+      // rayCandidates() needs the outermost pair's contrast at 0.6 kMinPairContrast (3.6) or more: below
+      // 3.5 (a margin for rounding) nothing else need be read.
+      if (nb == 1 && contrast[0] < 3.5) {
+        nbPairsOut = 0;
+        outerContrast = contrast[0];
+        nbExpected = 0;
+        return -1e30;
+      }
     }
     previous = mean;
     outerEdge = innerEdge;
@@ -272,10 +300,10 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   }
   black /= nbBlack;
   white /= nbWhite;
-  if (std::fabs(level[0] - black) > kInkTolerance * (white - black) || !solidRings(d, radius)) {
+  if (std::fabs(level[0] - black) > kInkTolerance * (white - black)) {
     return -1e30;
   }
-  return score;
+  return score; // solidRings() is the caller's last test, the dearest
 }
 
 bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
@@ -285,7 +313,7 @@ bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
   // Mid level between the two outer rings, from their middle halves.
   double level[2];
   for (int k = 0; k < 2; ++k) {
-    const double outer = radius * std::pow(q, k), inner = outer * q, margin = 0.25 * (outer - inner);
+    const double outer = k == 0 ? radius : radius * q, inner = outer * q, margin = 0.25 * (outer - inner);
     const size_t i0 = static_cast<size_t>(std::ceil((inner + margin) / m_step));
     const size_t i1 = std::min(P.size() - 1, static_cast<size_t>(std::floor((outer - margin) / m_step)));
     double sum = 0.;
@@ -300,7 +328,7 @@ bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
   // their side of the mid level. A neighbouring landmark's ring or the sheet's edge that happens to
   // darken part of the band beyond a landmark is not.
   for (int k = 0; k < 2; ++k) {
-    const double outer = radius * std::pow(q, k), inner = outer * q;
+    const double outer = k == 0 ? radius : radius * q, inner = outer * q;
     const double margin = 0.25 * (outer - inner);
     const size_t i0 = static_cast<size_t>(std::ceil((inner + margin) / m_step)) + 1;
     const size_t i1 = std::min(P.size() - 2, static_cast<size_t>(std::floor((outer - margin) / m_step)));
@@ -317,15 +345,27 @@ bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
   return true;
 }
 
-void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidate> &candidates) const
+void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidate> &candidates)
 {
   candidates.clear();
+  ray(d);
   const double available = (m_profile[d].size() - 1) * m_step;
   const double rMax = std::min(m_maxRadius, available);
   std::vector<double> &grid = m_grid, &scores = m_scores;
   grid.clear();
   const double logStep = std::log(1. / m_p);
-  for (double r = m_minRadius; r <= rMax; r *= kGridRatio) {
+  if (m_fullGridMin != m_minRadius || m_fullGridMax != m_maxRadius) {
+    m_fullGrid.clear();
+    for (double r = m_minRadius; r <= m_maxRadius; r *= kGridRatio) {
+      m_fullGrid.push_back(r);
+    }
+    m_fullGridMin = m_minRadius;
+    m_fullGridMax = m_maxRadius;
+  }
+  for (const double r : m_fullGrid) {
+    if (r > rMax) {
+      break;
+    }
     // Given a first reading, only the p-similar levels around it are worth a look.
     if (ref > 0.) {
       const double x = std::log(r / ref) / logStep;
@@ -347,7 +387,7 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
     }
     // The outermost ring must stand out dark against the next one: this pins R against the p-similar
     // copies at R / p (white paper would pass for a missing black ring) and R * sqrt(p) (anti-phase).
-    if (s < kMinPairContrast * nbPairs || outer < 0.6 * s / nbPairs) {
+    if (s < kMinPairContrast * nbPairs || outer < 0.6 * s / nbPairs || !solidRings(d, grid[i])) {
       continue;
     }
     scores[i] = s;
@@ -376,8 +416,9 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
   }
 }
 
-bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, double &position) const
+bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, double &position)
 {
+  ray(d);
   const std::vector<float> &P = m_profile[d];
   const double q = std::sqrt(m_p);
   // Levels of the two rings that meet here, from their middle halves (away from the blurred edges).
@@ -615,8 +656,7 @@ bool vpSSLRadiusEstimator::refineCentre(const vpImage<unsigned char> &I, double 
   return true;
 }
 
-bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v,
-                                          double &asymmetry) const
+bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry)
 {
   // The landmark is point-symmetric, and stays so under any affine view, symmetric blur and noise: its
   // centre minimises the difference between the image and its half-turn about it. Centres on the
@@ -630,41 +670,71 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
     asymmetry = 0.;
     return false; // too close to the border to compare both halves: keep the peak
   }
-  double E[2 * reach + 1][2 * reach + 1];
-  int bi = 0, bj = 0;
-  double bestE = std::numeric_limits<double>::max();
-  for (int j = -reach; j <= reach; ++j) {
-    for (int i = -reach; i <= reach; ++i) {
-      const int su = cu + i, sv = cv + j; // twice the centre
-      double e = 0.;
-      for (int dy = -radius; dy <= radius; ++dy) {
-        for (int dx = -radius; dx <= radius; ++dx) {
-          if (dx * dx + dy * dy > radius * radius || (dy < 0 || (dy == 0 && dx <= 0))) {
-            continue;
-          }
-          // Pixels p and q with p + q = 2 c.
-          const int pu = (su + 2 * dx) >> 1, pv = (sv + 2 * dy) >> 1;
-          const int qu = su - pu, qv = sv - pv;
-          const double diff = static_cast<double>(I[pv][pu]) - I[qv][qu];
-          e += diff * diff;
+  // Pixels p and q with p + q = 2 c, c = (su, sv) / 2: p = (su >> 1, sv >> 1) + (dx, dy) and
+  // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once.
+  if (m_symmetryRadius != radius || m_symmetryWidth != W) {
+    m_symmetryOffsets.clear();
+    for (int dy = 0; dy <= radius; ++dy) {
+      for (int dx = -radius; dx <= radius; ++dx) {
+        if (dx * dx + dy * dy <= radius * radius && (dy > 0 || dx > 0)) {
+          m_symmetryOffsets.push_back(dy * W + dx);
         }
       }
-      E[j + reach][i + reach] = e;
-      if (e < bestE) {
+    }
+    m_symmetryRadius = radius;
+    m_symmetryWidth = W;
+  }
+  const int *offsets = m_symmetryOffsets.data();
+  const int nbOffsets = static_cast<int>(m_symmetryOffsets.size());
+  const unsigned char *bitmap = I.bitmap;
+  // Sum of squared differences (exact in integers) about the centre (su, sv) / 2, given up as soon as it
+  // exceeds \e bound (returns bound + 1 then): only the minimum and its neighbours are needed.
+  auto energy = [&](int su, int sv, long bound) {
+    const unsigned char *p = bitmap + static_cast<long>(sv >> 1) * W + (su >> 1);
+    const unsigned char *q = bitmap + static_cast<long>((sv >> 1) + (sv & 1)) * W + (su >> 1) + (su & 1);
+    long e = 0;
+    for (int k = 0; k < nbOffsets;) {
+      const int end = std::min(nbOffsets, k + 16);
+      int partial = 0;
+      for (; k < end; ++k) {
+        const int diff = static_cast<int>(p[offsets[k]]) - static_cast<int>(q[-offsets[k]]);
+        partial += diff * diff;
+      }
+      e += partial;
+      if (e > bound) {
+        return bound + 1;
+      }
+    }
+    return e;
+  };
+  // The minimum over the search window, the first in row-major order on ties. The peak's own position
+  // is the likeliest minimum: evaluated first, it lets most others be given up early.
+  const long unbounded = std::numeric_limits<long>::max() - 1;
+  long bestE = energy(cu, cv, unbounded);
+  int bi = 0, bj = 0;
+  for (int j = -reach; j <= reach; ++j) {
+    for (int i = -reach; i <= reach; ++i) {
+      if (i == 0 && j == 0) {
+        continue;
+      }
+      const long e = energy(cu + i, cv + j, bestE);
+      if (e < bestE || (e == bestE && (j < bj || (j == bj && i < bi)))) {
         bestE = e;
         bi = i;
         bj = j;
       }
     }
   }
+  auto E = [&](int i, int j) { return static_cast<double>(energy(cu + i, cv + j, unbounded)); };
   double du = 0., dv = 0.;
+  const double b = static_cast<double>(bestE);
   if (bi > -reach && bi < reach) {
-    const double a = E[bj + reach][bi + reach - 1], b = E[bj + reach][bi + reach], c = E[bj + reach][bi + reach + 1];
+    const double a = E(bi - 1, bj), c = E(bi + 1, bj);
     const double den = a - 2. * b + c;
     du = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
   }
   if (bj > -reach && bj < reach) {
-    const double a = E[bj + reach - 1][bi + reach], b = E[bj + reach][bi + reach], c = E[bj + reach + 1][bi + reach];
+    const double a = E(bi, bj - 1), c = E(bi, bj + 1);
     const double den = a - 2. * b + c;
     dv = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
   }
@@ -685,13 +755,14 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
     }
   }
   const double variance = sum2 / n - (sum / n) * (sum / n);
-  asymmetry = E[bj + reach][bi + reach] / (0.5 * n * 2. * std::max(variance, 1.));
+  asymmetry = b / (0.5 * n * 2. * std::max(variance, 1.));
   return true;
 }
 
 bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
 {
   double u = landmark.u, v = landmark.v, scale = 0., asymmetry = 0.;
+  m_rayImage = nullptr; // the image may have changed in place since the last call
   // Clutter is seldom point-symmetric: most matching peaks end here, before any ring is read. The peak
   // of a landmark smaller than the window can sit a few pixels off: follow the symmetry until it settles.
   for (int iter = 0; iter < 3; ++iter) {

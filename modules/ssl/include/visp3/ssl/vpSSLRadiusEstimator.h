@@ -74,14 +74,15 @@ private:
     double radius;
     double score;
   };
-  void rayCandidates(int d, double ref, std::vector<Candidate> &candidates) const;
-  bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry) const;
+  void rayCandidates(int d, double ref, std::vector<Candidate> &candidates);
+  void ray(int d);
+  bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry);
   bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
   bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
                     double R[8], bool ok[8]);
   double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
   bool solidRings(int d, double radius) const;
-  bool ringEdge(int d, double expected, double halfWidth, double &position) const;
+  bool ringEdge(int d, double expected, double halfWidth, double &position);
 
   double m_minRadius;
   double m_maxRadius;
@@ -94,6 +95,17 @@ private:
   std::vector<double> m_prefix[8];
   mutable std::vector<double> m_grid, m_scores; // radius search scratch
   std::vector<Candidate> m_candidates[8];
+  // Centre of the rays (readRays()); each ray is read on first use (ray()).
+  const vpImage<unsigned char> *m_rayImage = nullptr;
+  double m_rayU = 0., m_rayV = 0., m_rayMaxRadius = 0.;
+  bool m_rayRead[8] = {false, false, false, false, false, false, false, false};
+  // Radius grid of the whole search range, built once (rayCandidates()).
+  std::vector<double> m_fullGrid;
+  double m_fullGridMin = 0., m_fullGridMax = 0.;
+  // Linear pixel offsets of the half disc compared with its half-turn (symmetryCentre()), for this radius and width.
+  std::vector<int> m_symmetryOffsets;
+  int m_symmetryRadius = -1;
+  int m_symmetryWidth = -1;
 };
 
 #endif
