@@ -15,9 +15,9 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPoseVector.h>
-#include <visp3/core/vpXmlParserCamera.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLBackground.h>
+#include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLScenario.h>
 #include <visp3/ssl/vpSSLSequenceInfo.h>
@@ -127,29 +127,12 @@ vpCameraParameters readCamera(const std::string &what, unsigned int &width, unsi
     throw vpException(vpException::ioError, "--camera: cannot read \"%s\" (use default, wide or a ViSP XML file)",
                       what.c_str());
   }
-  for (auto model :
-       {vpCameraParameters::perspectiveProjWithDistortion, vpCameraParameters::perspectiveProjWithoutDistortion}) {
-    vpXmlParserCamera parser;
-    // vpXmlParserCamera reports on std::cout; keep stdout for the summary.
-    std::ostringstream sink;
-    std::streambuf *coutBuf = std::cout.rdbuf(sink.rdbuf());
-    int status = vpXmlParserCamera::SEQUENCE_ERROR;
-    try {
-      status = parser.parse(cam, what, "Camera", model);
-    } catch (...) {
-    }
-    std::cout.rdbuf(coutBuf);
-    if (status == vpXmlParserCamera::SEQUENCE_OK) {
-      width = parser.getWidth();
-      height = parser.getHeight();
-      if (width == 0 || height == 0) {
-        throw vpException(vpException::badValue, "%s: camera \"Camera\": image_width and image_height are needed",
-                          what.c_str());
-      }
-      return cam;
-    }
+  cam = vpSSLCameraFile::load(what, "Camera", &width, &height);
+  if (width == 0 || height == 0) {
+    throw vpException(vpException::badValue, "%s: camera \"Camera\": image_width and image_height are needed",
+                      what.c_str());
   }
-  throw vpException(vpException::badValue, "%s: no camera named \"Camera\" with a perspective model", what.c_str());
+  return cam;
 }
 } // namespace
 

@@ -1,5 +1,7 @@
 #include <visp3/ssl/vpSSLSequenceReader.h>
 
+#include <visp3/ssl/vpSSLCameraFile.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -8,7 +10,6 @@
 #include <sstream>
 
 #include <visp3/core/vpException.h>
-#include <visp3/core/vpXmlParserCamera.h>
 #include <visp3/io/vpImageIo.h>
 
 namespace fs = std::filesystem;
@@ -129,53 +130,11 @@ void vpSSLSequenceReader::close()
 
 void vpSSLSequenceReader::readCamera()
 {
-  std::string path = (fs::path(m_folder) / "camera.xml").string();
+  const std::string path = (fs::path(m_folder) / "camera.xml").string();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throw vpException(vpException::ioError, path + ": missing");
-  // The file holds one projection model for "Camera"; vpXmlParserCamera only finds the one asked for.
-  const vpCameraParameters::vpCameraParametersProjType models[] = {
-      vpCameraParameters::perspectiveProjWithDistortion, vpCameraParameters::perspectiveProjWithoutDistortion};
-  bool found = false;
-  for (auto model : models) {
-    vpXmlParserCamera parser;
-    // vpXmlParserCamera prints "Found camera ..." on std::cout, which would corrupt a tool's JSON output.
-    std::ostringstream sink;
-    std::streambuf *coutBuf = std::cout.rdbuf(sink.rdbuf());
-    int status = vpXmlParserCamera::SEQUENCE_ERROR;
-    try {
-      status = parser.parse(m_cam, path, "Camera", model);
-    } catch (...) {
-      status = vpXmlParserCamera::SEQUENCE_ERROR;
-    }
-    std::cout.rdbuf(coutBuf);
-    if (status == vpXmlParserCamera::SEQUENCE_OK) {
-      m_width = parser.getWidth();
-      m_height = parser.getHeight();
-      found = true;
-      break;
-    }
-  }
-  if (!found) {
-    std::ifstream in(path);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
-    bool named = false;
-    for (size_t b = text.find("<name>"); b != std::string::npos && !named; b = text.find("<name>", b + 1)) {
-      size_t e = text.find("</name>", b);
-      named = e != std::string::npos && trim(text.substr(b + 6, e - b - 6)) == "Camera";
-    }
-    if (!named)
-      throw vpException(vpException::badValue,
-                        path + ": name: no camera named \"Camera\" (write it with vpXmlParserCamera::save(cam, file, "
-                               "\"Camera\", width, height))");
-    throw vpException(vpException::badValue,
-                      path + ": camera \"Camera\": no readable <model> (type perspectiveProjWithoutDistortion or "
-                             "perspectiveProjWithDistortion with px, py, u0, v0), or the file is not valid XML");
-  }
-  if (!(m_cam.get_px() > 0.) || !(m_cam.get_py() > 0.))
-    throw vpException(vpException::badValue, path + ": camera \"Camera\": px and py must be > 0");
+  m_cam = vpSSLCameraFile::load(path, "Camera", &m_width, &m_height);
 }
 
 void vpSSLSequenceReader::readHeader()

@@ -1,0 +1,41 @@
+/*!
+  \file vpSSLCameraFile.h
+  \brief Reading a camera from a ViSP XML camera file, whatever its projection model.
+*/
+#ifndef VP_SSL_CAMERA_FILE_H
+#define VP_SSL_CAMERA_FILE_H
+
+#include <string>
+
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/ssl/vpSSLConfig.h>
+
+/*!
+  \class vpSSLCameraFile
+  \ingroup group_ssl
+  \brief Loads a camera from a vpXmlParserCamera file with one call and one clear error.
+
+  vpXmlParserCamera finds a camera only under the projection model it is asked for, and reports on
+  standard output (which the tutorials keep for JSON). This reads the model the file holds, quietly, and
+  says what is wrong when it cannot: a missing file, no camera of that name, no readable model, a focal
+  length that is not positive.
+
+  \code
+  unsigned int width, height;
+  vpCameraParameters cam = vpSSLCameraFile::load("camera.xml", "Camera", &width, &height);
+  \endcode
+*/
+class VISP_SSL_EXPORT vpSSLCameraFile
+{
+public:
+  /*!
+    \param filename : ViSP XML camera file.
+    \param name : camera name in the file (the recorded-sequence format uses "Camera").
+    \param width, height : if given, the image size the file states (0 when it states none).
+    \exception vpException naming the file and the field.
+  */
+  static vpCameraParameters load(const std::string &filename, const std::string &name = "Camera",
+                                 unsigned int *width = nullptr, unsigned int *height = nullptr);
+};
+
+#endif
