@@ -48,7 +48,7 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
     : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
       m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_maxRadius(300.), m_threshold(0.12),
-      m_rois()
+      m_rois(), m_noRois(), m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
 {
   m_radiusEstimator.setP(target.getP());
 }
@@ -66,6 +66,14 @@ void vpSSLDetector::setSmallLandmarkMode(bool enable)
 {
   m_upsample = enable;
   m_match.setWindow(enable ? kSmallModeWindow : m_window);
+}
+
+void vpSSLDetector::setRegionsOfInterest(const std::vector<vpRect> &rois)
+{
+  if (m_rois.empty() && !rois.empty()) {
+    m_roiCalls = 0; // tracking starts: the period counts from here
+  }
+  m_rois.assign(rois.begin(), rois.end());
 }
 
 void vpSSLDetector::setThreshold(double threshold)
@@ -88,14 +96,18 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
 {
   auto t0 = std::chrono::steady_clock::now();
   auto t = t0;
-  m_polygon.clear();
-  m_message.clear();
+  // Containers are cleared, not freed: their storage is reused from frame to frame (issue 4: no heap
+  // allocation in steady state).
   m_nb_objects = 0;
   m_landmarks.clear();
-  m_targetMatch = vpSSLTargetMatch();
   m_targetMatch.detection.assign(getTarget().size(), -1);
+  m_targetMatch.found = false;
+  m_targetMatch.nbMatched = 0;
+  m_targetMatch.residual = 0.;
   m_times = vpSSLDetectorTimes();
   if (I.getSize() == 0) {
+    m_polygon.clear();
+    m_message.clear();
     throw vpException(vpException::dimensionError, "vpSSLDetector::detect: empty image");
   }
 
@@ -103,13 +115,20 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   // clip a dark background to the ink's black, and the outermost ring is told from the background by
   // its level (vpSSLRadiusEstimator).
   const vpImage<unsigned char> *raw = &I;
-  const std::vector<vpRect> *rois = &m_rois;
+  // Paper Sec. 4.1: with regions of interest, every n-th frame still searches the whole image, so that a
+  // landmark the tracker has lost (or never predicted) is picked up again.
+  m_lastSearchWasFull = true;
+  if (!m_rois.empty()) {
+    ++m_roiCalls;
+    m_lastSearchWasFull = m_fullSearchPeriod > 0 && m_roiCalls % m_fullSearchPeriod == 0;
+  }
+  const std::vector<vpRect> *rois = m_lastSearchWasFull ? &m_noRois : &m_rois;
   const double scale = m_upsample ? 2. : 1.;
   if (m_upsample) {
     upsample2(I, m_upsampled);
     raw = &m_upsampled;
     m_scaledRois.clear();
-    for (const vpRect &r : m_rois) {
+    for (const vpRect &r : *rois) {
       m_scaledRois.push_back(
           vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
     }
@@ -136,16 +155,23 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
 
   m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
   m_radiusEstimator.setPixelScale(scale);
+  // The white paper just outside the outermost black ring continues the pattern by one ring (out to
+  // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
+  const double margin = 1. / std::sqrt(getTarget().getP());
+  const double margin2 = margin * margin;
   for (const vpSSLPeak &peak : m_peaks) {
-    // Landmarks do not overlap, so a peak inside one already found (peaks come strongest first) is on its
-    // rings, not another landmark's centre: most peaks are, and reading their rays is the dearest stage.
+    // Landmarks do not overlap, so a peak inside one already found or on its paper ring (peaks come
+    // strongest first) is on its rings, not another landmark's centre: most peaks are, and reading their
+    // rays is the dearest stage. Another landmark's centre is at least R + r from this one's, so it can
+    // only lie within R / sqrt(p) if its radius r is below (1 / sqrt(p) - 1) R, 0.41 R for p = 0.5, and it
+    // touches this one's outer ring: printed landmarks are separated by a margin.
     const double pu = m_upsample ? 0.5 * (peak.u + 0.5) - 0.5 : peak.u;
     const double pv = m_upsample ? 0.5 * (peak.v + 0.5) - 0.5 : peak.v;
     bool inside = false;
     for (const vpSSLLandmark &k : m_landmarks) {
       const double c = std::cos(k.theta), s = std::sin(k.theta), du = pu - k.u, dv = pv - k.v;
       const double x = (c * du + s * dv) / k.radius, y = (c * dv - s * du) / k.minorRadius;
-      if (x * x + y * y < 1.) {
+      if (x * x + y * y < margin2) {
         inside = true;
         break;
       }
@@ -160,10 +186,9 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     if (!m_radiusEstimator.estimate(*raw, l)) {
       continue;
     }
-    std::vector<int> S;
     l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, static_cast<int>(std::lround(l.u)),
                                               static_cast<int>(std::lround(l.v)),
-                                              static_cast<unsigned int>(1.5 * scale * m_maxRadius), S);
+                                              static_cast<unsigned int>(1.5 * scale * m_maxRadius), m_sweep);
     if (m_upsample) {
       l.u = 0.5 * (l.u + 0.5) - 0.5;
       l.v = 0.5 * (l.v + 0.5) - 0.5;
@@ -187,8 +212,13 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
     m_landmarks.push_back(l);
   }
-  std::stable_sort(m_landmarks.begin(), m_landmarks.end(),
-                   [](const vpSSLLandmark &a, const vpSSLLandmark &b) { return a.score > b.score; });
+  // Stable insertion sort, best score first: a handful of landmarks, and std::stable_sort would allocate
+  // a buffer every frame.
+  for (size_t i = 1; i < m_landmarks.size(); ++i) {
+    for (size_t j = i; j > 0 && m_landmarks[j - 1].score < m_landmarks[j].score; --j) {
+      std::swap(m_landmarks[j - 1], m_landmarks[j]);
+    }
+  }
   m_times.radius = elapsedMs(t);
 
   m_targetMatch = m_identifier.identify(m_landmarks);
@@ -202,25 +232,32 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
 void vpSSLDetector::fillObjects()
 {
   const vpSSLTarget &target = getTarget();
-  std::vector<std::string> labels(m_landmarks.size(), "ssl");
+  // Resized, not rebuilt: the polygons and the short messages keep their storage between frames.
+  m_polygon.resize(m_landmarks.size());
+  m_message.resize(m_landmarks.size());
+  for (std::string &m : m_message) {
+    m.assign("ssl");
+  }
   for (size_t k = 0; k < m_targetMatch.detection.size(); ++k) {
     if (m_targetMatch.detection[k] >= 0) {
-      labels[m_targetMatch.detection[k]] = target.getName() + " " + target.getLandmark(k).name;
+      std::string &m = m_message[m_targetMatch.detection[k]];
+      m.assign(target.getName());
+      m.append(" ");
+      m.append(target.getLandmark(k).name);
     }
   }
   const int nbVertices = 16;
   for (size_t i = 0; i < m_landmarks.size(); ++i) {
     const vpSSLLandmark &l = m_landmarks[i];
-    std::vector<vpImagePoint> polygon;
+    std::vector<vpImagePoint> &polygon = m_polygon[i];
+    polygon.resize(nbVertices);
     const double c = std::cos(l.theta), s = std::sin(l.theta);
     const double b = l.minorRadius > 0. ? l.minorRadius : l.radius;
     for (int k = 0; k < nbVertices; ++k) {
       const double a = 2. * M_PI * k / nbVertices;
       const double x = l.radius * std::cos(a), y = b * std::sin(a);
-      polygon.push_back(vpImagePoint(l.v + s * x + c * y, l.u + c * x - s * y));
+      polygon[k].set_ij(l.v + s * x + c * y, l.u + c * x - s * y);
     }
-    m_polygon.push_back(polygon);
-    m_message.push_back(labels[i]);
   }
   m_nb_objects = m_landmarks.size();
 }

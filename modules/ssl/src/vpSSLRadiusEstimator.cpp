@@ -6,27 +6,25 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLRadiusEstimatorInternal.h"
+
+using namespace vpSSLRadiusEstimatorInternal;
+
 namespace {
-const double kCos[8] = {1., M_SQRT1_2, 0., -M_SQRT1_2, -1., -M_SQRT1_2, 0., M_SQRT1_2};
-const double kSin[8] = {0., M_SQRT1_2, 1., M_SQRT1_2, 0., -M_SQRT1_2, -1., -M_SQRT1_2};
 // Rings narrower than this (px) are blurred into their neighbours by any real lens: not read.
 const double kMinRingWidth = 0.8;
 // Rings closer to the centre than this (px) are dominated by the centre's sub-pixel uncertainty.
 const double kMinRingRadius = 1.0;
 // Grid ratio of the radius search; the best grid value is then refined by a parabola.
 const double kGridRatio = 1.02;
-// Smallest mean contrast (grey levels of the normalised image) between adjacent rings of a readable ray.
-const double kMinPairContrast = 6.;
 // Rings at least this wide (px) are read on any landmark that is in focus.
 const double kClearRingWidth = 2.5;
 // How far the outermost ring's level may stray from the inner black rings', relative to the ring contrast.
 const double kInkTolerance = 0.3;
 // Share of a solid ring's interior samples that must be on its side of the mid level.
 const double kSolidRing = 0.85;
-// Radius (px) of the disc compared with its half-turn to centre a candidate: the innermost rings, which
-// every landmark has whatever its size.
-const double kSymmetryRadius = 8.;
-// Largest residual of that comparison, relative to the disc's variance (clutter is near 1).
+// Largest residual of the half-turn comparison (symmetryCentre()), relative to the disc's variance (clutter
+// is near 1).
 const double kMaxAsymmetry = 0.6;
 // Share of the best level's total score that an outer level needs to be taken for the landmark's.
 const double kLevelShare = 0.7;
@@ -35,87 +33,6 @@ const int kMinAlternations = 3;
 
 // Largest relative distance of a ray's edge point from the fitted ellipse.
 const double kMaxEllipseResidual = 0.08;
-
-struct Ellipse
-{
-  double major = 0., minor = 0., theta = 0.;
-  double a = 0., b = 0., c = 0.; // a x^2 + 2 b x y + c y^2 = 1
-  //! Distance from the centre to the ellipse along the unit direction (x, y).
-  double radiusAlong(double x, double y) const { return 1. / std::sqrt(a * x * x + 2. * b * x * y + c * y * y); }
-  double worstResidual = 0.;
-  int worstRay = -1;
-};
-
-// Least-squares ellipse centred at the origin, A x^2 + B x y + C y^2 = 1, through the points R[d] (cos, sin).
-bool fitEllipse(const double R[8], const bool ok[8], Ellipse &e)
-{
-  double N[3][3] = {{0.}}, r[3] = {0.};
-  unsigned int axes = 0;
-  for (int d = 0; d < 8; ++d) {
-    if (!ok[d]) {
-      continue;
-    }
-    axes |= 1u << (d % 4);
-    const double x = R[d] * kCos[d], y = R[d] * kSin[d];
-    const double row[3] = {x * x, x * y, y * y};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        N[i][j] += row[i] * row[j];
-      }
-      r[i] += row[i];
-    }
-  }
-  // Three distinct axes are needed to pin the three coefficients.
-  if (((axes & 1) != 0) + ((axes & 2) != 0) + ((axes & 4) != 0) + ((axes & 8) != 0) < 3) {
-    return false;
-  }
-  auto det3 = [](const double M[3][3]) {
-    return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-           M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
-  };
-  const double D = det3(N);
-  if (!(std::fabs(D) > 1e-30)) {
-    return false;
-  }
-  double sol[3];
-  for (int k = 0; k < 3; ++k) {
-    double Mk[3][3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        Mk[i][j] = (j == k) ? r[i] : N[i][j];
-      }
-    }
-    sol[k] = det3(Mk) / D;
-  }
-  const double a = sol[0], b = 0.5 * sol[1], c = sol[2];
-  const double tr = a + c, dt = a * c - b * b;
-  if (!(a > 0. && dt > 0.)) {
-    return false;
-  }
-  e.a = a;
-  e.b = b;
-  e.c = c;
-  const double disc = std::sqrt(std::max(0., 0.25 * tr * tr - dt));
-  const double l1 = 0.5 * tr - disc, l2 = 0.5 * tr + disc; // l1 <= l2: l1 along the major axis
-  e.major = 1. / std::sqrt(l1);
-  e.minor = 1. / std::sqrt(l2);
-  const double theta = 0.5 * std::atan2(2. * b, a - c) + M_PI_2;
-  e.theta = std::atan2(std::sin(theta), std::cos(theta));
-  e.worstResidual = 0.;
-  e.worstRay = -1;
-  for (int d = 0; d < 8; ++d) {
-    if (!ok[d]) {
-      continue;
-    }
-    const double q = a * kCos[d] * kCos[d] + 2. * b * kCos[d] * kSin[d] + c * kSin[d] * kSin[d];
-    const double residual = q > 0. ? std::fabs(R[d] * std::sqrt(q) - 1.) : 1e30;
-    if (residual > e.worstResidual) {
-      e.worstResidual = residual;
-      e.worstRay = d;
-    }
-  }
-  return true;
-}
 
 inline float bilinear(const vpImage<unsigned char> &I, double u, double v)
 {
@@ -188,28 +105,41 @@ bool vpSSLRadiusEstimator::readRays(const vpImage<unsigned char> &I, double u, d
   return true;
 }
 
-void vpSSLRadiusEstimator::ray(int d)
+void vpSSLRadiusEstimator::ray(int d, double upTo)
 {
-  if (m_rayRead[d]) {
-    return;
-  }
-  m_rayRead[d] = true;
   const vpImage<unsigned char> &I = *m_rayImage;
   const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
   const double u = m_rayU, v = m_rayV;
   std::vector<float> &P = m_profile[d];
   std::vector<double> &C = m_prefix[d];
-  P.clear();
-  C.assign(1, 0.);
-  for (double rho = 0.;; rho += m_step) {
+  // Sample i lies at rho = i m_step (exact: m_step is a power of two) while inside the search range and
+  // the image; leaving either is final along a ray from an inside centre, so the ray's length is found by
+  // bisection without reading it.
+  auto inside = [&](size_t i) {
+    const double rho = static_cast<double>(i) * m_step;
     const double x = u + rho * kCos[d], y = v + rho * kSin[d];
-    if (rho > m_rayMaxRadius || x < 0. || y < 0. || x > W || y > H) {
-      break;
+    return !(rho > m_rayMaxRadius || x < 0. || y < 0. || x > W || y > H);
+  };
+  if (!m_rayRead[d]) {
+    m_rayRead[d] = true;
+    P.clear();
+    C.assign(1, 0.);
+    size_t lo = 0, hi = static_cast<size_t>(m_rayMaxRadius / m_step) + 2; // inside(lo), !inside(hi)
+    while (hi - lo > 1) {
+      const size_t mid = (lo + hi) / 2;
+      (inside(mid) ? lo : hi) = mid;
     }
-    P.push_back(bilinear(I, x, y));
-    if (P.size() > 1) {
+    m_raySamples[d] = lo + 1;
+  }
+  // Only the samples out to upTo (and two beyond, for interpolation) are read: the centre refinement
+  // re-reads the rays near the landmark's radius only, and most candidates are given up on early.
+  const size_t want = std::min(m_raySamples[d], static_cast<size_t>(std::max(0., upTo / m_step)) + 3);
+  for (size_t i = P.size(); i < want; ++i) {
+    const double rho = static_cast<double>(i) * m_step;
+    P.push_back(bilinear(I, u + rho * kCos[d], v + rho * kSin[d]));
+    if (i > 0) {
       // Trapezoidal integral of the profile from 0 to rho.
-      C.push_back(C.back() + 0.5 * m_step * (P[P.size() - 2] + P.back()));
+      C.push_back(C.back() + 0.5 * m_step * (P[i - 1] + P[i]));
     }
   }
 }
@@ -348,8 +278,8 @@ bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
 void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidate> &candidates)
 {
   candidates.clear();
-  ray(d);
-  const double available = (m_profile[d].size() - 1) * m_step;
+  ray(d, 0.);
+  const double available = (m_raySamples[d] - 1) * m_step;
   const double rMax = std::min(m_maxRadius, available);
   std::vector<double> &grid = m_grid, &scores = m_scores;
   grid.clear();
@@ -374,6 +304,9 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
       }
     }
     grid.push_back(r);
+  }
+  if (!grid.empty()) {
+    ray(d, grid.back());
   }
   scores.assign(grid.size(), -1e30);
   for (size_t i = 0; i < grid.size(); ++i) {
@@ -416,50 +349,6 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
   }
 }
 
-bool vpSSLRadiusEstimator::ringEdge(int d, double expected, double halfWidth, double &position)
-{
-  ray(d);
-  const std::vector<float> &P = m_profile[d];
-  const double q = std::sqrt(m_p);
-  // Levels of the two rings that meet here, from their middle halves (away from the blurred edges).
-  auto mean = [&](double a, double b) {
-    const size_t i0 = static_cast<size_t>(std::max(0., std::ceil(a / m_step)));
-    const size_t i1 = std::min(P.size() - 1, static_cast<size_t>(std::floor(b / m_step)));
-    double sum = 0.;
-    size_t n = 0;
-    for (size_t i = i0; i <= i1; ++i, ++n) {
-      sum += P[i];
-    }
-    return n > 0 ? sum / n : -1.;
-  };
-  const double outerWidth = expected / q - expected, innerWidth = expected - expected * q;
-  const double levelOut = mean(expected + 0.25 * outerWidth, expected + 0.75 * outerWidth);
-  const double levelIn = mean(expected - 0.75 * innerWidth, expected - 0.25 * innerWidth);
-  if (levelOut < 0. || levelIn < 0. || std::fabs(levelOut - levelIn) < kMinPairContrast) {
-    return false;
-  }
-  const double mid = 0.5 * (levelOut + levelIn);
-  const long i0 = std::max(0L, static_cast<long>(std::floor((expected - halfWidth) / m_step)));
-  const long i1 =
-      std::min(static_cast<long>(P.size()) - 2, static_cast<long>(std::ceil((expected + halfWidth) / m_step)));
-  double best = -1., bestDist = 1e30;
-  for (long i = i0; i <= i1; ++i) {
-    const double a = P[i] - mid, b = P[i + 1] - mid;
-    if ((a < 0.) != (b < 0.) && a != b) {
-      const double rho = (i + a / (a - b)) * m_step;
-      if (std::fabs(rho - expected) < bestDist) {
-        bestDist = std::fabs(rho - expected);
-        best = rho;
-      }
-    }
-  }
-  if (best < 0.) {
-    return false;
-  }
-  position = best;
-  return true;
-}
-
 bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8], double &scale)
 {
   std::vector<Candidate> *candidates = m_candidates;
@@ -476,7 +365,8 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
   if (ref == nullptr) {
     // From the matching peak, which may sit a few pixels off the centre for a landmark smaller than the
     // window: each ray's best reading, and the rays that disagree wildly with the others dropped.
-    std::vector<double> valid;
+    std::vector<double> &valid = m_valid;
+    valid.clear();
     for (int d = 0; d < 8; ++d) {
       ok[d] = false;
       double best = -1.;
@@ -563,200 +453,6 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
     }
   }
   return false;
-}
-
-bool vpSSLRadiusEstimator::refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u,
-                                        double &v, double R[8], bool ok[8])
-{
-  const double q = std::sqrt(m_p);
-  unsigned int nbOk = 0;
-  // 2. Edges of the printed rings (not the outer edge, whose outside is unknown) locate the centre and
-  // the radius to a fraction of a pixel: the midpoint of opposite edges is the centre of that ring's
-  // ellipse. Under perspective the rings are not concentric (their centres drift with the square of
-  // their radius), so the midpoints of successive rings are extrapolated to radius 0, the image of the
-  // landmark's centre.
-  const int maxEdges = 3;
-  for (int iter = 0; iter < 6; ++iter) {
-    double edge[8][maxEdges];
-    int nbEdges[8];
-    nbOk = 0;
-    for (int d = 0; d < 8; ++d) {
-      nbEdges[d] = 0;
-      if (!ok[d]) {
-        continue;
-      }
-      double expected = R[d] * q;
-      for (int j = 0; j < maxEdges; ++j, expected *= q) {
-        const double ringWidth = expected * (1. - q);
-        // The first edge is needed; deeper ones only help the extrapolation when wide enough not to be blurred.
-        const double minWidth = (j == 0 ? 1.2 : 3.) * m_pixelScale;
-        if (ringWidth < minWidth || !ringEdge(d, expected, 0.3 * ringWidth, edge[d][j])) {
-          break;
-        }
-        ++nbEdges[d];
-      }
-      // A ray whose rings are too thin for edges (a small landmark) keeps its pattern-fit radius.
-      if (nbEdges[d] > 0) {
-        R[d] = edge[d][0] / q;
-      }
-      ++nbOk;
-    }
-    if (nbOk < m_minDirections) {
-      return false;
-    }
-    double A00 = 0., A01 = 0., A11 = 0., b0 = 0., b1 = 0.;
-    for (int a = 0; a < 4; ++a) {
-      const int n = std::min(nbEdges[a], nbEdges[a + 4]);
-      if (n == 0) {
-        continue;
-      }
-      // Offset of each ring's centre along this axis, against the ring's radius squared.
-      double offset;
-      if (n >= 2) {
-        double sx = 0., sy = 0., sxx = 0., sxy = 0.;
-        for (int j = 0; j < n; ++j) {
-          const double r = 0.5 * (edge[a][j] + edge[a + 4][j]), x = r * r, y = 0.5 * (edge[a][j] - edge[a + 4][j]);
-          sx += x;
-          sy += y;
-          sxx += x * x;
-          sxy += x * y;
-        }
-        const double den = n * sxx - sx * sx;
-        offset = den > 1e-9 ? (sy * sxx - sx * sxy) / den : sy / n;
-      } else {
-        offset = 0.5 * (edge[a][0] - edge[a + 4][0]);
-      }
-      A00 += kCos[a] * kCos[a];
-      A01 += kCos[a] * kSin[a];
-      A11 += kSin[a] * kSin[a];
-      b0 += offset * kCos[a];
-      b1 += offset * kSin[a];
-    }
-    const double det = A00 * A11 - A01 * A01;
-    if (det < 1e-6) {
-      break;
-    }
-    const double du = (A11 * b0 - A01 * b1) / det, dv = (A00 * b1 - A01 * b0) / det;
-    if (std::fabs(du) < 0.01 && std::fabs(dv) < 0.01) {
-      break;
-    }
-    u += du;
-    v += dv;
-    // A matching peak sits near the centre; rays that pull it far away read some other pattern.
-    if (std::hypot(u - u0, v - v0) > std::max(2., 0.25 * scale)) {
-      return false;
-    }
-    for (int d = 0; d < 8; ++d) {
-      R[d] -= du * kCos[d] + dv * kSin[d];
-    }
-    if (!readRays(I, u, v, m_maxRadius)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry)
-{
-  // The landmark is point-symmetric, and stays so under any affine view, symmetric blur and noise: its
-  // centre minimises the difference between the image and its half-turn about it. Centres on the
-  // half-pixel grid pair whole pixels, so no interpolation is needed.
-  const int radius = static_cast<int>(std::lround(kSymmetryRadius * m_pixelScale));
-  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
-  const int reach = 6; // half pixels searched either way
-  const int cu = static_cast<int>(std::lround(2. * u)), cv = static_cast<int>(std::lround(2. * v));
-  if (cu - reach < 2 * radius || cv - reach < 2 * radius || cu + reach > 2 * (W - 1 - radius) ||
-      cv + reach > 2 * (H - 1 - radius)) {
-    asymmetry = 0.;
-    return false; // too close to the border to compare both halves: keep the peak
-  }
-  // Pixels p and q with p + q = 2 c, c = (su, sv) / 2: p = (su >> 1, sv >> 1) + (dx, dy) and
-  // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once.
-  if (m_symmetryRadius != radius || m_symmetryWidth != W) {
-    m_symmetryOffsets.clear();
-    for (int dy = 0; dy <= radius; ++dy) {
-      for (int dx = -radius; dx <= radius; ++dx) {
-        if (dx * dx + dy * dy <= radius * radius && (dy > 0 || dx > 0)) {
-          m_symmetryOffsets.push_back(dy * W + dx);
-        }
-      }
-    }
-    m_symmetryRadius = radius;
-    m_symmetryWidth = W;
-  }
-  const int *offsets = m_symmetryOffsets.data();
-  const int nbOffsets = static_cast<int>(m_symmetryOffsets.size());
-  const unsigned char *bitmap = I.bitmap;
-  // Sum of squared differences (exact in integers) about the centre (su, sv) / 2, given up as soon as it
-  // exceeds \e bound (returns bound + 1 then): only the minimum and its neighbours are needed.
-  auto energy = [&](int su, int sv, long bound) {
-    const unsigned char *p = bitmap + static_cast<long>(sv >> 1) * W + (su >> 1);
-    const unsigned char *q = bitmap + static_cast<long>((sv >> 1) + (sv & 1)) * W + (su >> 1) + (su & 1);
-    long e = 0;
-    for (int k = 0; k < nbOffsets;) {
-      const int end = std::min(nbOffsets, k + 16);
-      int partial = 0;
-      for (; k < end; ++k) {
-        const int diff = static_cast<int>(p[offsets[k]]) - static_cast<int>(q[-offsets[k]]);
-        partial += diff * diff;
-      }
-      e += partial;
-      if (e > bound) {
-        return bound + 1;
-      }
-    }
-    return e;
-  };
-  // The minimum over the search window, the first in row-major order on ties. The peak's own position
-  // is the likeliest minimum: evaluated first, it lets most others be given up early.
-  const long unbounded = std::numeric_limits<long>::max() - 1;
-  long bestE = energy(cu, cv, unbounded);
-  int bi = 0, bj = 0;
-  for (int j = -reach; j <= reach; ++j) {
-    for (int i = -reach; i <= reach; ++i) {
-      if (i == 0 && j == 0) {
-        continue;
-      }
-      const long e = energy(cu + i, cv + j, bestE);
-      if (e < bestE || (e == bestE && (j < bj || (j == bj && i < bi)))) {
-        bestE = e;
-        bi = i;
-        bj = j;
-      }
-    }
-  }
-  auto E = [&](int i, int j) { return static_cast<double>(energy(cu + i, cv + j, unbounded)); };
-  double du = 0., dv = 0.;
-  const double b = static_cast<double>(bestE);
-  if (bi > -reach && bi < reach) {
-    const double a = E(bi - 1, bj), c = E(bi + 1, bj);
-    const double den = a - 2. * b + c;
-    du = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
-  }
-  if (bj > -reach && bj < reach) {
-    const double a = E(bi, bj - 1), c = E(bi, bj + 1);
-    const double den = a - 2. * b + c;
-    dv = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
-  }
-  u = 0.5 * (cu + bi + du);
-  v = 0.5 * (cv + bj + dv);
-  // Residual relative to the disc's own contrast: 0 for a perfectly symmetric pattern, about 1 for clutter.
-  double sum = 0., sum2 = 0.;
-  int n = 0;
-  const int pu = (cu + bi) >> 1, pv = (cv + bj) >> 1;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    for (int dx = -radius; dx <= radius; ++dx) {
-      if (dx * dx + dy * dy <= radius * radius) {
-        const double g = I[pv + dy][pu + dx];
-        sum += g;
-        sum2 += g * g;
-        ++n;
-      }
-    }
-  }
-  const double variance = sum2 / n - (sum / n) * (sum / n);
-  asymmetry = b / (0.5 * n * 2. * std::max(variance, 1.));
-  return true;
 }
 
 bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)

@@ -100,7 +100,17 @@ public:
     Restricts the next detections to these rectangles (empty: whole image). Landmarks whose centre
     lies inside a rectangle are found as long as the rectangle extends w around them.
   */
-  void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_rois = rois; }
+  void setRegionsOfInterest(const std::vector<vpRect> &rois);
+  /*!
+    Full-search period n of the tracking mode (default 10, paper Sec. 4.1): while regions of interest
+    are set, every n-th detect() call (the n-th, 2n-th, ... since the regions were first set) searches
+    the whole image instead, so that a landmark outside the regions is found again. 0: never; 1: always.
+  */
+  void setFullSearchPeriod(unsigned int n) { m_fullSearchPeriod = n; }
+  //! Full-search period of the tracking mode.
+  unsigned int getFullSearchPeriod() const { return m_fullSearchPeriod; }
+  //! Whether the last detect() searched the whole image (always true without regions of interest).
+  bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
 
   unsigned int getWindow() const { return m_window; }                       ///< Window length w (at full resolution).
   double getThreshold() const { return m_threshold; }                       ///< Score threshold.
@@ -149,6 +159,10 @@ private:
   double m_maxRadius;
   double m_threshold;
   std::vector<vpRect> m_rois;
+  std::vector<vpRect> m_noRois; // always empty: the whole image
+  unsigned int m_fullSearchPeriod;
+  unsigned long m_roiCalls; // detect() calls with regions of interest since they were set
+  bool m_lastSearchWasFull;
 
   vpImage<unsigned char> m_normalized;
   vpImage<unsigned char> m_upsampled;
@@ -156,6 +170,7 @@ private:
   vpImage<int> m_map;
   std::vector<vpSSLPeak> m_peaks;
   std::vector<vpSSLLandmark> m_landmarks;
+  std::vector<int> m_sweep; // Eq. 7 sweep, reused
   vpSSLTargetMatch m_targetMatch;
   vpSSLDetectorTimes m_times;
 };

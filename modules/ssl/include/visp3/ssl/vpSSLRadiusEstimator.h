@@ -75,7 +75,7 @@ private:
     double score;
   };
   void rayCandidates(int d, double ref, std::vector<Candidate> &candidates);
-  void ray(int d);
+  void ray(int d, double upTo);
   bool symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry);
   bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
   bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
@@ -95,10 +95,12 @@ private:
   std::vector<double> m_prefix[8];
   mutable std::vector<double> m_grid, m_scores; // radius search scratch
   std::vector<Candidate> m_candidates[8];
+  std::vector<double> m_valid; // selectRadii() scratch
   // Centre of the rays (readRays()); each ray is read on first use (ray()).
   const vpImage<unsigned char> *m_rayImage = nullptr;
   double m_rayU = 0., m_rayV = 0., m_rayMaxRadius = 0.;
   bool m_rayRead[8] = {false, false, false, false, false, false, false, false};
+  size_t m_raySamples[8] = {0, 0, 0, 0, 0, 0, 0, 0}; // length of each whole ray, in samples
   // Radius grid of the whole search range, built once (rayCandidates()).
   std::vector<double> m_fullGrid;
   double m_fullGridMin = 0., m_fullGridMax = 0.;

@@ -1,0 +1,245 @@
+/*
+  Tracking mode of the detector (paper Sec. 4.1, issue 4): matching only in regions of interest around the
+  predicted landmarks gives the same landmarks as the full frame, a full-image search still runs every n-th
+  frame (default 10, as in the paper) so that a landmark outside the regions is found again, and detect()
+  itself allocates nothing on the heap once its buffers have grown (only the target identifier's result,
+  counted separately, does).
+*/
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <visp3/core/vpMath.h>
+#include <visp3/core/vpRect.h>
+#include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl/vpSSLTargetIdentifier.h>
+
+// Counts operator new calls while armed, to check that steady-state detections allocate nothing.
+namespace {
+std::atomic<bool> g_countNew{false};
+std::atomic<long> g_newCalls{0};
+} // namespace
+
+void *operator new(std::size_t size)
+{
+  if (g_countNew) {
+    ++g_newCalls;
+  }
+  if (void *p = std::malloc(size == 0 ? 1 : size)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void *operator new(std::size_t size, std::align_val_t align)
+{
+  if (g_countNew) {
+    ++g_newCalls;
+  }
+  const std::size_t a = static_cast<std::size_t>(align);
+  if (void *p = std::aligned_alloc(a, (size + a - 1) / a * a)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void *p, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void *p, std::size_t, std::align_val_t) noexcept
+{
+  std::free(p);
+}
+void operator delete(void *p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void *p, std::size_t) noexcept
+{
+  std::free(p);
+}
+
+namespace {
+// ssl3-a3 1 m away, turned by a few degrees (the view of bench-detector), through a 56-degree 640x480 camera.
+struct View
+{
+  vpImage<unsigned char> I;
+  std::vector<vpImagePoint> centres; // projected landmark centres, target order
+};
+
+const View &view()
+{
+  static View v;
+  if (v.I.getSize() == 0) {
+    const vpHomogeneousMatrix cMo(0.02, -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+    vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
+    renderer.setTarget(vpSSLTarget::ssl3a3());
+    renderer.render(cMo, v.I);
+    v.centres = renderer.projectLandmarks(cMo);
+  }
+  return v;
+}
+
+vpRect roiAround(const vpImagePoint &c)
+{
+  return vpRect(c.get_u() - 50., c.get_v() - 50., 100., 100.);
+}
+
+bool inside(const vpSSLLandmark &l, const std::vector<vpRect> &rois)
+{
+  for (const vpRect &r : rois) {
+    if (r.isInside(vpImagePoint(l.v, l.u))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Number of landmarks of \e detector within 2 px of a projected centre.
+unsigned int nbFound(const vpSSLDetector &detector, const std::vector<vpImagePoint> &centres)
+{
+  unsigned int n = 0;
+  for (const vpImagePoint &c : centres) {
+    for (const vpSSLLandmark &l : detector.getLandmarks()) {
+      if (std::hypot(l.u - c.get_u(), l.v - c.get_v()) < 2.) {
+        ++n;
+        break;
+      }
+    }
+  }
+  return n;
+}
+} // namespace
+
+TEST(DetectorRoi, RoisGiveTheFullFrameLandmarksInsideThem)
+{
+  const View &v = view();
+  ASSERT_EQ(v.centres.size(), 3u);
+  vpSSLDetector full;
+  full.setNbThreads(1);
+  ASSERT_TRUE(full.detect(v.I));
+  ASSERT_EQ(nbFound(full, v.centres), 3u);
+
+  std::vector<vpRect> rois;
+  for (const vpImagePoint &c : v.centres) {
+    rois.push_back(roiAround(c));
+  }
+  vpSSLDetector tracked;
+  tracked.setNbThreads(1);
+  tracked.setFullSearchPeriod(0);
+  tracked.setRegionsOfInterest(rois);
+  ASSERT_TRUE(tracked.detect(v.I));
+  EXPECT_FALSE(tracked.getLastSearchWasFull());
+  EXPECT_TRUE(tracked.getTargetMatch().found);
+
+  // The same landmarks, field by field: the rings are read on the same image from the same peaks.
+  unsigned int compared = 0;
+  for (const vpSSLLandmark &a : full.getLandmarks()) {
+    if (!inside(a, rois)) {
+      continue;
+    }
+    const vpSSLLandmark *match = nullptr;
+    for (const vpSSLLandmark &b : tracked.getLandmarks()) {
+      if (std::hypot(a.u - b.u, a.v - b.v) < 1.) {
+        match = &b;
+      }
+    }
+    ASSERT_NE(match, nullptr) << "landmark at " << a.u << ", " << a.v << " lost in ROI mode";
+    EXPECT_DOUBLE_EQ(match->u, a.u);
+    EXPECT_DOUBLE_EQ(match->v, a.v);
+    EXPECT_DOUBLE_EQ(match->radius, a.radius);
+    EXPECT_DOUBLE_EQ(match->minorRadius, a.minorRadius);
+    EXPECT_DOUBLE_EQ(match->theta, a.theta);
+    EXPECT_DOUBLE_EQ(match->score, a.score);
+    EXPECT_EQ(match->nbDirections, a.nbDirections);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3u);
+  EXPECT_EQ(tracked.getLandmarks().size(), compared);
+  for (size_t k = 0; k < 3; ++k) {
+    ASSERT_NE(tracked.getMatchedLandmark(k), nullptr);
+    ASSERT_NE(full.getMatchedLandmark(k), nullptr);
+    EXPECT_DOUBLE_EQ(tracked.getMatchedLandmark(k)->u, full.getMatchedLandmark(k)->u);
+  }
+}
+
+TEST(DetectorRoi, EveryNthFrameSearchesTheWholeImageAsInSec41)
+{
+  const View &v = view();
+  vpSSLDetector detector;
+  detector.setNbThreads(1);
+  EXPECT_EQ(detector.getFullSearchPeriod(), 10u); // the paper's period
+  ASSERT_TRUE(detector.detect(v.I));
+  EXPECT_TRUE(detector.getLastSearchWasFull()); // no regions: always the whole image
+
+  // One region, around the first landmark only: the two others are outside it.
+  const unsigned int period = 4;
+  detector.setFullSearchPeriod(period);
+  detector.setRegionsOfInterest({roiAround(v.centres[0])});
+  for (unsigned int call = 1; call <= 3 * period; ++call) {
+    // A tracker moves its regions every frame; that must not restart the period.
+    detector.setRegionsOfInterest({roiAround(v.centres[0])});
+    ASSERT_TRUE(detector.detect(v.I)) << "call " << call;
+    const bool full = call % period == 0;
+    EXPECT_EQ(detector.getLastSearchWasFull(), full) << "call " << call;
+    EXPECT_EQ(nbFound(detector, v.centres), full ? 3u : 1u) << "call " << call;
+    EXPECT_EQ(detector.getLandmarks().size(), full ? 3u : 1u) << "call " << call;
+  }
+
+  detector.setFullSearchPeriod(1);
+  detector.detect(v.I);
+  EXPECT_TRUE(detector.getLastSearchWasFull());
+  EXPECT_EQ(nbFound(detector, v.centres), 3u);
+  detector.setFullSearchPeriod(0);
+  for (int call = 0; call < 12; ++call) {
+    detector.detect(v.I);
+    EXPECT_FALSE(detector.getLastSearchWasFull());
+    EXPECT_EQ(nbFound(detector, v.centres), 1u);
+  }
+  detector.setRegionsOfInterest({});
+  detector.detect(v.I);
+  EXPECT_TRUE(detector.getLastSearchWasFull());
+}
+
+TEST(DetectorRoi, NoHeapAllocationInSteadyState)
+{
+  const View &v = view();
+  std::vector<vpRect> rois;
+  for (const vpImagePoint &c : v.centres) {
+    rois.push_back(roiAround(c));
+  }
+  const vpSSLTargetIdentifier identifier(vpSSLTarget::ssl3a3());
+  for (int mode = 0; mode < 3; ++mode) {
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setSmallLandmarkMode(mode == 2);
+    if (mode == 1) {
+      detector.setFullSearchPeriod(3);
+      detector.setRegionsOfInterest(rois);
+    }
+    // Buffers grow during the first calls (a full-search frame included in ROI mode).
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_TRUE(detector.detect(v.I));
+    }
+    for (int k = 0; k < 3; ++k) {
+      g_newCalls = 0;
+      g_countNew = true;
+      detector.detect(v.I);
+      g_countNew = false;
+      const long detectNew = g_newCalls;
+      ASSERT_EQ(nbFound(detector, v.centres), 3u) << "mode " << mode;
+      // The target identifier returns its match by value (vpSSLTargetIdentifier::identify()): its own
+      // allocations are the only ones allowed.
+      g_newCalls = 0;
+      g_countNew = true;
+      const vpSSLTargetMatch match = identifier.identify(detector.getLandmarks());
+      g_countNew = false;
+      const long identifyNew = g_newCalls;
+      EXPECT_TRUE(match.found);
+      EXPECT_EQ(detectNew, identifyNew) << "mode " << mode << ", call " << k;
+    }
+  }
+}
