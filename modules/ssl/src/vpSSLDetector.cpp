@@ -221,7 +221,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   }
   m_times.radius = elapsedMs(t);
 
-  m_targetMatch = m_identifier.identify(m_landmarks);
+  m_identifier.identify(m_landmarks, m_targetMatch);
   m_times.identification = elapsedMs(t);
 
   fillObjects();

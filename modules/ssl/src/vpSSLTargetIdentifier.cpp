@@ -2,17 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <visp3/core/vpException.h>
 
 namespace {
 // Affine map of the unit circle onto a landmark's outer ellipse: undoing it rectifies the target plane
 // locally, up to a rotation, a scale and without changing its orientation (its determinant is > 0).
-struct Ellipse2x2
-{
-  double m[2][2];
-  double inv[2][2];
-};
+using Ellipse2x2 = vpSSLTargetIdentifier::Ellipse2x2;
 
 Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
 {
@@ -31,12 +28,6 @@ Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
   return e;
 }
 
-struct Hypothesis
-{
-  std::vector<int> detection;
-  unsigned int nbMatched = 0;
-  double residual = 0.;
-};
 } // namespace
 
 vpSSLTargetIdentifier::vpSSLTargetIdentifier(const vpSSLTarget &target)
@@ -57,19 +48,35 @@ vpSSLTargetIdentifier::vpSSLTargetIdentifier(const vpSSLTarget &target)
 
 vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks) const
 {
-  const size_t K = m_target.size(), N = landmarks.size();
   vpSSLTargetMatch result;
+  identify(landmarks, result);
+  return result;
+}
+
+void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks, vpSSLTargetMatch &result) const
+{
+  const size_t K = m_target.size(), N = landmarks.size();
+  result.found = false;
+  result.nbMatched = 0;
+  result.residual = 0.;
   result.detection.assign(K, -1);
   if (N == 0) {
-    return result;
+    return;
   }
-  std::vector<Ellipse2x2> maps(N);
+  // Scratch reused from call to call: no allocation once the buffers have grown.
+  std::vector<Ellipse2x2> &maps = m_maps;
+  maps.resize(N);
   for (size_t i = 0; i < N; ++i) {
     maps[i] = ellipseMap(landmarks[i]);
   }
   const std::vector<vpSSLTargetLandmark> &model = m_target.getLandmarks();
 
-  std::vector<Hypothesis> hypotheses;
+  std::vector<int> &hypDetection = m_hypDetection; // K labels per hypothesis
+  std::vector<unsigned int> &hypCount = m_hypCount;
+  std::vector<double> &hypResidual = m_hypResidual;
+  hypDetection.clear();
+  hypCount.clear();
+  hypResidual.clear();
   for (size_t i = 0; i < N; ++i) {
     for (size_t k = 0; k < K; ++k) {
       for (size_t j = 0; j < N; ++j) {
@@ -101,11 +108,12 @@ vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark
           const double phi = std::atan2(wy, wx) - std::atan2(my, mx);
           const double scale = dw / dm / model[k].radius; // rectified radii per metre
           const double cphi = std::cos(phi) * scale, sphi = std::sin(phi) * scale;
-          Hypothesis h;
-          h.detection.assign(K, -1);
-          h.detection[k] = static_cast<int>(i);
-          h.detection[l] = static_cast<int>(j);
-          h.nbMatched = 2;
+          const size_t base = hypDetection.size();
+          hypDetection.resize(base + K, -1);
+          int *detection = &hypDetection[base];
+          detection[k] = static_cast<int>(i);
+          detection[l] = static_cast<int>(j);
+          unsigned int nbMatched = 2;
           double residual = std::fabs(dw / dm - 1.);
           for (size_t m = 0; m < K; ++m) {
             if (m == k || m == l) {
@@ -134,40 +142,41 @@ vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark
               }
             }
             if (bestJ >= 0) {
-              h.detection[m] = bestJ;
-              ++h.nbMatched;
+              detection[m] = bestJ;
+              ++nbMatched;
               residual += bestE;
             }
           }
-          h.residual = residual / (h.nbMatched - 1);
-          hypotheses.push_back(h);
+          hypCount.push_back(nbMatched);
+          hypResidual.push_back(residual / (nbMatched - 1));
         }
       }
     }
   }
 
+  const size_t H = hypCount.size();
   unsigned int bestCount = 0;
-  for (const Hypothesis &h : hypotheses) {
-    bestCount = std::max(bestCount, h.nbMatched);
+  for (size_t h = 0; h < H; ++h) {
+    bestCount = std::max(bestCount, hypCount[h]);
   }
   if (bestCount >= 2) {
     // Keep only the labels that every equally complete hypothesis agrees on: two landmarks of a symmetric
     // target cannot be told apart (paper Sec. 3.2, case 2).
-    const Hypothesis *best = nullptr;
-    for (const Hypothesis &h : hypotheses) {
-      if (h.nbMatched == bestCount && (best == nullptr || h.residual < best->residual)) {
-        best = &h;
+    size_t best = H;
+    for (size_t h = 0; h < H; ++h) {
+      if (hypCount[h] == bestCount && (best == H || hypResidual[h] < hypResidual[best])) {
+        best = h;
       }
     }
-    std::vector<int> agreed = best->detection;
-    const double residual = best->residual;
-    for (const Hypothesis &hh : hypotheses) {
-      const Hypothesis *h = &hh;
-      if (h->nbMatched != bestCount || h->residual > residual + 0.1) {
+    const double residual = hypResidual[best];
+    std::vector<int> &agreed = result.detection;
+    std::copy(hypDetection.begin() + best * K, hypDetection.begin() + (best + 1) * K, agreed.begin());
+    for (size_t h = 0; h < H; ++h) {
+      if (hypCount[h] != bestCount || hypResidual[h] > residual + 0.1) {
         continue;
       }
       for (size_t k = 0; k < K; ++k) {
-        if (agreed[k] != h->detection[k]) {
+        if (agreed[k] != hypDetection[h * K + k]) {
           agreed[k] = -1;
         }
       }
@@ -178,11 +187,11 @@ vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark
     }
     if (agreed[m_big] >= 0 && n > 0) {
       result.found = true;
-      result.detection = agreed;
       result.nbMatched = n;
       result.residual = residual;
-      return result;
+      return;
     }
+    std::fill(agreed.begin(), agreed.end(), -1);
   }
   // Case 1 (and case 2 when the labels stay ambiguous): the biggest landmark seen stands for the big one.
   size_t biggest = 0;
@@ -194,5 +203,4 @@ vpSSLTargetMatch vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark
   result.found = true;
   result.nbMatched = 1;
   result.detection[m_big] = static_cast<int>(biggest);
-  return result;
 }

@@ -60,12 +60,30 @@ public:
 
   //! Identifies the target among \e landmarks.
   vpSSLTargetMatch identify(const std::vector<vpSSLLandmark> &landmarks) const;
+  //! Same, into \e result, without allocating once its buffers have grown (per-frame use).
+  void identify(const std::vector<vpSSLLandmark> &landmarks, vpSSLTargetMatch &result) const;
 
 private:
   vpSSLTarget m_target;
   double m_radiusTol;
   double m_distanceTol;
   int m_big; // index of the biggest target landmark
+
+public:
+  //! \cond INTERNAL
+  struct Ellipse2x2 // affine map of the unit circle onto a landmark's outer ellipse, and its inverse
+  {
+    double m[2][2];
+    double inv[2][2];
+  };
+  //! \endcond
+
+private:
+  // Per-call buffers, reused so that identify() does not allocate once they have grown.
+  mutable std::vector<Ellipse2x2> m_maps;
+  mutable std::vector<int> m_hypDetection; // target-landmark labels, K per hypothesis
+  mutable std::vector<unsigned int> m_hypCount;
+  mutable std::vector<double> m_hypResidual;
 };
 
 #endif
