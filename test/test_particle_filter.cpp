@@ -129,9 +129,9 @@ ApproachRun approachRun(size_t nbFrames, double targetTiltDeg = 20.)
   return r;
 }
 
-vpSSLFilterHypothesis hypothesis(const vpHomogeneousMatrix &cMo, double posSigma, double rotSigma, double weight = 1.)
+vpSSLPoseHypothesis hypothesis(const vpHomogeneousMatrix &cMo, double posSigma, double rotSigma, double weight = 1.)
 {
-  vpSSLFilterHypothesis h;
+  vpSSLPoseHypothesis h;
   h.cMo = cMo;
   h.positionSigma = posSigma;
   h.rotationSigma = rotSigma;
@@ -487,7 +487,7 @@ TEST(ParticleFilter, PositionOnlyHypothesisConverges)
   vpSSLParticleFilter pf(target, kCam);
   pf.setSeed(12);
   pf.setNbParticles(2000);
-  vpSSLFilterHypothesis h = hypothesis(cMo * pose(0.02, -0.02, 0.05, 0, 0, 0), 0.03, 0.);
+  vpSSLPoseHypothesis h = hypothesis(cMo * pose(0.02, -0.02, 0.05, 0, 0, 0), 0.03, 0.);
   h.orientationKnown = false;
   pf.init({h});
   vpGaussRand g(1., 0., 121);

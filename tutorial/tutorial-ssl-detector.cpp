@@ -16,6 +16,7 @@
 #include <visp3/io/vpImageIo.h>
 #include <visp3/io/vpVideoReader.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLPoseEstimator.h>
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [options]
@@ -25,8 +26,9 @@ Detects circular self-similar landmarks (SSL) and identifies the target in each 
 Options:
   --input PATH        An image file, or a numbered sequence as a vpVideoReader pattern
                       (e.g. images/%06d.png). Required.
-  --camera FILE       Camera parameters (ViSP XML, vpXmlParserCamera). Enables range_m
-                      (paper Eq. 6) and normalised feature coordinates.
+  --camera FILE       Camera parameters (ViSP XML, vpXmlParserCamera). Enables cMo (the best
+                      P3P pose hypothesis when the target's three landmarks are seen, paper
+                      Sec. 3.2) and range_m (|t| of that pose, else Eq. 6 from the radii).
   --camera-name NAME  Camera name inside the XML file (default: Camera).
   --target NAME|FILE  Built-in target name or target file (default: ssl3-a3).
   --json              Print one JSON object per image on standard output (JSON Lines,
@@ -85,7 +87,7 @@ std::string num(double x, int digits)
 
 // The detect-json.md record of one image.
 std::string toJson(const std::string &name, const vpImage<unsigned char> &I, const vpSSLDetector &detector,
-                   const vpCameraParameters *cam)
+                   const vpSSLPoseEstimator &estimator, const vpCameraParameters *cam)
 {
   std::ostringstream os;
   os << "{\"image\": " << jsonString(name) << ", \"width\": " << I.getWidth() << ", \"height\": " << I.getHeight()
@@ -124,9 +126,33 @@ std::string toJson(const std::string &name, const vpImage<unsigned char> &I, con
       sz += Z;
     }
   }
-  os << "}, \"cMo\": null, \"range_m\": ";
-  if (cam != nullptr) {
-    // Distance to the centroid of the matched landmarks: the target origin when all three are seen.
+  // Case 3 of the paper: a full pose, the hypothesis that best explains the landmarks' ellipses.
+  bool havePose = false;
+  vpHomogeneousMatrix cMo;
+  if (cam != nullptr && match.nbMatched >= 3) {
+    try {
+      const std::vector<vpSSLPoseHypothesis> hypotheses = estimator.estimate(detector, *cam);
+      havePose = !hypotheses.front().positionOnly;
+      cMo = hypotheses.front().cMo;
+    } catch (const vpException &e) {
+      std::cerr << "tutorial-ssl-detector: " << name << ": no pose: " << e.getStringMessage() << std::endl;
+    }
+  }
+  os << "}, \"cMo\": ";
+  if (havePose) {
+    os << "[";
+    for (unsigned int i = 0; i < 16; ++i) {
+      os << (i ? ", " : "") << num(cMo[i / 4][i % 4], 6);
+    }
+    os << "]";
+  } else {
+    os << "null";
+  }
+  os << ", \"range_m\": ";
+  if (havePose) {
+    os << num(cMo.getTranslationVector().frobeniusNorm(), 3);
+  } else if (cam != nullptr) {
+    // No pose (fewer than three landmarks): Eq. 6 distance to the centroid of the matched landmarks.
     const double n = match.nbMatched;
     os << num(std::sqrt(sx * sx + sy * sy + sz * sz) / n, 3);
   } else {
@@ -256,6 +282,7 @@ int main(int argc, char **argv)
     fail(e.getStringMessage(), 2);
   }
   vpSSLDetector detector(target);
+  const vpSSLPoseEstimator estimator(target);
   detector.setWindow(window);
   detector.setThreshold(threshold);
   detector.setBrightnessNormalization(normalize);
@@ -317,7 +344,7 @@ int main(int argc, char **argv)
     }
     nbFound += detector.getTargetMatch().found ? 1 : 0;
     if (json) {
-      std::cout << toJson(name, I, detector, haveCamera ? &cam : nullptr) << std::endl;
+      std::cout << toJson(name, I, detector, estimator, haveCamera ? &cam : nullptr) << std::endl;
     }
     annotate(I, detector, annotated);
     if (display) {

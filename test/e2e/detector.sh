@@ -41,6 +41,28 @@ first, last = json.loads(lines[0]), json.loads(lines[-1])
 assert first["target"]["n_landmarks"] == 3, first
 assert last["target"]["n_landmarks"] == 1, last        # 2 m: only the big landmark is large enough
 assert abs(last["target"]["range_m"] - 2.0) < 0.15, last  # Eq. 6 (to B's centre)
+assert last["target"]["cMo"] is None, last               # one landmark: no pose (paper case 1)
+# Three landmarks and a camera: a pose (paper case 3). The demo poses are not stored: check plausibility.
+import math
+t = first["target"]
+M = t["cMo"]
+assert isinstance(M, list) and len(M) == 16, t
+assert M[12:] == [0, 0, 0, 1], M
+R = [[M[4 * i + j] for j in range(3)] for i in range(3)]
+for i in range(3):
+    for j in range(3):
+        dot = sum(R[k][i] * R[k][j] for k in range(3))
+        assert abs(dot - (1 if i == j else 0)) < 1e-4, ("rotation not orthonormal", R)
+tx, ty, tz = M[3], M[7], M[11]
+norm = math.sqrt(tx * tx + ty * ty + tz * tz)
+assert tz > 0, M
+assert abs(t["range_m"] - norm) < 2e-3, (t["range_m"], norm)
+# |t| against Eq. 6 on the big landmark B (R = 0.1 m, px = 554.3) and the bearing of its centre.
+u, v = t["landmarks"]["B"]
+rB = [l["radius_px"] for l in first["landmarks"] if (l["u"], l["v"]) == (u, v)][0]
+zB = 554.3 * 0.1 / rB
+pB = [(u - 320) / 554.3 * zB, (v - 240) / 554.3 * zB, zB]
+assert abs(norm - math.sqrt(sum(c * c for c in pB))) < 0.15 * norm, (norm, pB)
 PY
 
 # Without a camera there is no range and no pose.

@@ -328,14 +328,14 @@ void vpSSLParticleFilter::checkInitialised(const char *where) const
   }
 }
 
-void vpSSLParticleFilter::init(const std::vector<vpSSLFilterHypothesis> &hypotheses)
+void vpSSLParticleFilter::init(const std::vector<vpSSLPoseHypothesis> &hypotheses)
 {
   if (hypotheses.empty()) {
     throw vpException(vpException::badValue, "vpSSLParticleFilter::init: no pose hypothesis");
   }
   double total = 0;
   for (size_t k = 0; k < hypotheses.size(); ++k) {
-    const vpSSLFilterHypothesis &h = hypotheses[k];
+    const vpSSLPoseHypothesis &h = hypotheses[k];
     if (!isRigid(h.cMo) || !(h.weight > 0) || !std::isfinite(h.weight) || !(h.positionSigma >= 0) ||
         !std::isfinite(h.depthSigma) || !(h.rotationSigma >= 0)) {
       std::ostringstream os;
@@ -360,7 +360,7 @@ void vpSSLParticleFilter::init(const std::vector<vpSSLFilterHypothesis> &hypothe
       ++k;
       cumul += hypotheses[k].weight / total;
     }
-    const vpSSLFilterHypothesis &h = hypotheses[k];
+    const vpSSLPoseHypothesis &h = hypotheses[k];
     Particle &p = m_particles[i];
     double R[9], t[3];
     toArray(h.cMo, R, t);
@@ -542,7 +542,7 @@ double vpSSLParticleFilter::logLikelihood(const Particle &p, const std::vector<v
 }
 
 vpSSLParticleFilter::vpUpdateStatus vpSSLParticleFilter::update(const std::vector<vpSSLObservation> &observations,
-                                                                const std::vector<vpSSLFilterHypothesis> &recovery)
+                                                                const std::vector<vpSSLPoseHypothesis> &recovery)
 {
   checkInitialised("update");
   const int nl = static_cast<int>(m_landmarks.size() / 4);

@@ -15,23 +15,8 @@
 #include <visp3/core/vpQuaternionVector.h>
 #include <visp3/core/vpUniRand.h>
 #include <visp3/ssl/vpSSLConfig.h>
+#include <visp3/ssl/vpSSLPoseHypothesis.h>
 #include <visp3/ssl/vpSSLTarget.h>
-
-/*!
-  \struct vpSSLFilterHypothesis
-  \ingroup group_ssl
-  \brief A target pose the filter is initialised around (one P3P solution, or a range-and-bearing
-  position from one landmark when the orientation is unknown, paper Sec. 3.2).
-*/
-struct VISP_SSL_EXPORT vpSSLFilterHypothesis
-{
-  vpHomogeneousMatrix cMo;      ///< Target pose in the camera frame.
-  double weight = 1.;           ///< Relative share of the particles (> 0).
-  double positionSigma = 0.02;  ///< Standard deviation of the position along the camera X and Y (m).
-  double depthSigma = 0.;       ///< Standard deviation along the camera Z (m); <= 0 means positionSigma.
-  double rotationSigma = 0.05;  ///< Standard deviation of each theta-u component (rad).
-  bool orientationKnown = true; ///< False: the orientation is drawn over every target facing the camera.
-};
 
 /*!
   \struct vpSSLObservation
@@ -139,7 +124,7 @@ public:
     Draws the particles around \e hypotheses, each getting a share proportional to its weight.
     \exception vpException if the list is empty or a hypothesis has a non-finite pose or a weight <= 0.
   */
-  void init(const std::vector<vpSSLFilterHypothesis> &hypotheses);
+  void init(const std::vector<vpSSLPoseHypothesis> &hypotheses);
 
   /*!
     Moves the particles by the vehicle displacement \e v1Mv2 (pose of the vehicle at this image in its
@@ -159,7 +144,7 @@ public:
     \exception vpException if a label is outside the target or a value is not finite.
   */
   vpUpdateStatus update(const std::vector<vpSSLObservation> &observations,
-                        const std::vector<vpSSLFilterHypothesis> &recovery = std::vector<vpSSLFilterHypothesis>());
+                        const std::vector<vpSSLPoseHypothesis> &recovery = std::vector<vpSSLPoseHypothesis>());
 
   //! Weighted mean pose: mean position, quaternion mean as the dominant eigenvector of sum w q q^T.
   vpHomogeneousMatrix getMeanPose() const { return m_meanPose; }
