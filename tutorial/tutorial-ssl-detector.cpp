@@ -11,10 +11,10 @@
 #include <visp3/core/vpImageDraw.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpPixelMeterConversion.h>
-#include <visp3/core/vpXmlParserCamera.h>
 #include <visp3/gui/vpDisplayX.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/io/vpVideoReader.h>
+#include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 
@@ -257,25 +257,7 @@ int main(int argc, char **argv)
     check.setWindow(window);
     check.setThreshold(threshold);
     if (!cameraFile.empty()) {
-      if (!vpIoTools::checkFilename(cameraFile)) {
-        fail(cameraFile + ": cannot read camera file", 2);
-      }
-      vpXmlParserCamera parser;
-      // vpXmlParserCamera chats on standard output, which carries only JSON here: silence it.
-      std::ostringstream chatter;
-      std::streambuf *out = std::cout.rdbuf(chatter.rdbuf());
-      const bool parsed =
-          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithDistortion) ==
-              vpXmlParserCamera::SEQUENCE_OK ||
-          parser.parse(cam, cameraFile, cameraName, vpCameraParameters::perspectiveProjWithoutDistortion) ==
-              vpXmlParserCamera::SEQUENCE_OK;
-      std::cout.rdbuf(out);
-      if (!parsed) {
-        fail(cameraFile + ": no camera named \"" + cameraName + "\" with a perspective projection", 2);
-      }
-      if (!(cam.get_px() > 0. && cam.get_py() > 0.)) {
-        fail(cameraFile + ": camera \"" + cameraName + "\": px and py must be > 0", 2);
-      }
+      cam = vpSSLCameraFile::load(cameraFile, cameraName);
       haveCamera = true;
     }
   } catch (const vpException &e) {
