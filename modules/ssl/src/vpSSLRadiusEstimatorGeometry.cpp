@@ -16,6 +16,9 @@ namespace {
 // Radius (px) of the disc compared with its half-turn to centre a candidate: the innermost rings, which
 // every landmark has whatever its size.
 const double kSymmetryRadius = 8.;
+// Variance (grey levels^2) below which the disc is too flat for its symmetry to mean anything: a 15 grey
+// level standard deviation, above the sensor noise of any usable image.
+const double kFlatVariance = 225.;
 } // namespace
 
 bool vpSSLRadiusEstimatorInternal::fitEllipse(const double R[8], const bool ok[8], Ellipse &e)
@@ -322,6 +325,8 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
     }
   }
   const double variance = sum2 / n - (sum / n) * (sum / n);
-  asymmetry = b / (0.5 * n * 2. * std::max(variance, 1.));
+  // A nearly flat disc (the innermost rings of a large landmark blurred by water and lens into a grey
+  // spot) says nothing either way: its residual is sensor noise. Only a contrasted disc is judged.
+  asymmetry = variance < kFlatVariance ? 0. : b / (0.5 * n * 2. * variance);
   return true;
 }
