@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <visp3/io/vpImageIo.h>
+#include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 
@@ -184,4 +186,21 @@ TEST(Identification, IdentifierAloneOnHandMadeLandmarks)
   EXPECT_LE(m.nbMatched, 1u);
   EXPECT_TRUE(identifier.identify({}).detection == std::vector<int>(3, -1));
   EXPECT_FALSE(identifier.identify({}).found);
+}
+
+TEST(Identification, BigLandmarkInClearWaterAgainstDarkWater)
+{
+  // data/sequences/approach-clear frame 10 (simulated clear water, 1.36 m): the water beyond the sheet is
+  // nearly as dark as the ink, so half of B's rays read one more ring; B must still be read at its size.
+  const std::string dir = std::string(VISP_SSL_DATA_DIR) + "/sequences/approach-clear";
+  vpImage<unsigned char> I;
+  vpImageIo::read(I, dir + "/images/000010.png");
+  const vpCameraParameters cam = vpSSLCameraFile::load(dir + "/camera.xml");
+  vpSSLDetector detector;
+  detector.detect(I);
+  const vpSSLLandmark *b = detector.getMatchedLandmark(0);
+  ASSERT_NE(b, nullptr);
+  // Ground truth (frames.csv): the target origin at (0.047, 0.033, 1.362) m; B is 0.104 m from it.
+  const double range = vpSSLDetector::range(*b, 0.1, cam);
+  EXPECT_NEAR(range, 1.36, 0.12) << "B read at " << b->radius << " px";
 }

@@ -384,6 +384,45 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
     if (valid.size() < m_minDirections) {
       return false;
     }
+    // A dark background beyond the paper can make half the rays prefer R / p, while every ray still reads
+    // R: first the scale most rays can read (within the factor 2 either way that a tilted landmark's rays
+    // span), then the median of the rays' best readings at that scale.
+    unsigned int bestSupport = 0;
+    double bestTotal = -1., anchor = valid.front();
+    for (double h : valid) {
+      unsigned int support = 0;
+      double total = 0.;
+      for (int d = 0; d < 8; ++d) {
+        double score = -1.;
+        for (const Candidate &c : candidates[d]) {
+          if (c.radius >= 0.55 * h && c.radius <= 1.8 * h) {
+            score = std::max(score, c.score);
+          }
+        }
+        if (score > 0.) {
+          ++support;
+          total += score;
+        }
+      }
+      if (support > bestSupport || (support == bestSupport && total > bestTotal)) {
+        bestSupport = support;
+        bestTotal = total;
+        anchor = h;
+      }
+    }
+    valid.clear();
+    for (int d = 0; d < 8; ++d) {
+      double score = -1., radius = 0.;
+      for (const Candidate &c : candidates[d]) {
+        if (c.radius >= 0.55 * anchor && c.radius <= 1.8 * anchor && c.score > score) {
+          score = c.score;
+          radius = c.radius;
+        }
+      }
+      if (score > 0.) {
+        valid.push_back(radius);
+      }
+    }
     std::nth_element(valid.begin(), valid.begin() + valid.size() / 2, valid.end());
     scale = valid[valid.size() / 2];
     // Each ray then takes its reading nearest the median: a ray whose best reading is another level
