@@ -5,9 +5,9 @@
   itself allocates nothing on the heap once its buffers have grown (only the target identifier's result,
   counted separately, does).
 */
-#include <atomic>
+
 #include <cstdlib>
-#include <new>
+
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -18,49 +18,7 @@
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
 
-// Counts operator new calls while armed, to check that steady-state detections allocate nothing.
-namespace {
-std::atomic<bool> g_countNew{false};
-std::atomic<long> g_newCalls{0};
-} // namespace
-
-void *operator new(std::size_t size)
-{
-  if (g_countNew) {
-    ++g_newCalls;
-  }
-  if (void *p = std::malloc(size == 0 ? 1 : size)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void *operator new(std::size_t size, std::align_val_t align)
-{
-  if (g_countNew) {
-    ++g_newCalls;
-  }
-  const std::size_t a = static_cast<std::size_t>(align);
-  if (void *p = std::aligned_alloc(a, (size + a - 1) / a * a)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void *p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-  std::free(p);
-}
+#include "allocation_counter.h"
 
 namespace {
 // ssl3-a3 1 m away, turned by a few degrees (the view of bench-detector), through a 56-degree 640x480 camera.
@@ -225,11 +183,12 @@ TEST(DetectorRoi, NoHeapAllocationInSteadyState)
       ASSERT_TRUE(detector.detect(v.I));
     }
     for (int k = 0; k < 3; ++k) {
-      g_newCalls = 0;
-      g_countNew = true;
-      detector.detect(v.I);
-      g_countNew = false;
-      const long detectNew = g_newCalls;
+      long detectNew = 0;
+      {
+        const sslt::AllocationCounter counter;
+        detector.detect(v.I);
+        detectNew = counter.count();
+      }
       ASSERT_EQ(nbFound(detector, v.centres), 3u) << "mode " << mode;
       EXPECT_EQ(detectNew, 0) << "mode " << mode << ", call " << k;
     }

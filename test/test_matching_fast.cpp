@@ -4,10 +4,11 @@
   length, at the borders and odd widths, for any thread count, on every SIMD target compiled in, and inside
   the regions of interest (0 outside them).
 */
+
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <new>
+
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,49 +20,7 @@
 #include <visp3/core/vpUniRand.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 
-// Counts operator new calls while armed, to check that steady-state calls allocate nothing.
-namespace {
-std::atomic<bool> g_countNew{false};
-std::atomic<long> g_newCalls{0};
-} // namespace
-
-void *operator new(std::size_t size)
-{
-  if (g_countNew) {
-    ++g_newCalls;
-  }
-  if (void *p = std::malloc(size == 0 ? 1 : size)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void *operator new(std::size_t size, std::align_val_t align)
-{
-  if (g_countNew) {
-    ++g_newCalls;
-  }
-  const std::size_t a = static_cast<std::size_t>(align);
-  if (void *p = std::aligned_alloc(a, (size + a - 1) / a * a)) {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void *p, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p, std::size_t, std::align_val_t) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-  std::free(p);
-}
+#include "allocation_counter.h"
 
 namespace {
 enum class Kind
@@ -340,12 +299,14 @@ TEST(MatchingFast, steadyStateCallsDoNotAllocate)
     f.compute(I, M);
     f.compute(I, rois, Mroi);
   }
-  g_newCalls = 0;
-  g_countNew = true;
-  f.compute(I, M);
-  f.compute(I, rois, Mroi);
-  g_countNew = false;
-  EXPECT_EQ(g_newCalls.load(), 0);
+  long allocations = 0;
+  {
+    const sslt::AllocationCounter counter;
+    f.compute(I, M);
+    f.compute(I, rois, Mroi);
+    allocations = counter.count();
+  }
+  EXPECT_EQ(allocations, 0);
 }
 
 TEST(MatchingFast, reportsTheTargetThatRuns)

@@ -4,9 +4,7 @@
 */
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdlib>
-#include <new>
 
 #include <algorithm>
 #include <cmath>
@@ -22,23 +20,7 @@
 #include <visp3/ssl/vpSSLParticleFilter.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
-// Counts operator new calls (std containers, exceptions), to check that predict() and update() reuse their buffers.
-static std::atomic<long> g_nbAllocations(0);
-void *operator new(std::size_t n)
-{
-  ++g_nbAllocations;
-  if (void *p = std::malloc(n ? n : 1))
-    return p;
-  throw std::bad_alloc();
-}
-void operator delete(void *p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-  std::free(p);
-}
+#include "allocation_counter.h"
 
 namespace {
 const vpCameraParameters kCam(800, 800, 320, 240);
@@ -520,17 +502,17 @@ TEST(ParticleFilter, NoHeapAllocationPerStep)
       odo[k] = run.odometry(k);
   }
   pf.init({hypothesis(run.cMo[0], 0.03, vpMath::rad(3.))});
-  const long before = g_nbAllocations.load();
+  const sslt::AllocationCounter counter;
   unsigned int nbUpdated = 0;
   for (size_t k = 1; k < run.cMo.size(); ++k) {
     pf.predict(odo[k], run.cMv);
     nbUpdated += (pf.update(obs[k]) == vpSSLParticleFilter::UPDATED);
   }
-  EXPECT_EQ(g_nbAllocations.load() - before, 0);
+  EXPECT_EQ(counter.count(), 0);
   // The counter does count (ViSP's vpArray2D uses malloc and escapes it: the filter's predict() and update()
   // build no ViSP array, they work on flat doubles).
   std::vector<double> probe(pf.getNbParticles());
-  EXPECT_GT(g_nbAllocations.load() - before, 0);
+  EXPECT_GT(counter.count(), 0);
   EXPECT_EQ(probe.size(), 1000u);
   EXPECT_EQ(nbUpdated, run.cMo.size() - 1);
   EXPECT_GT(pf.getNbResamplings(), 0u);
