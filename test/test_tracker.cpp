@@ -20,6 +20,8 @@
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
+#include "ssl_test_utils.h"
+
 namespace {
 struct Sequence
 {
@@ -101,15 +103,6 @@ double positionError(const vpHomogeneousMatrix &cMo, const vpPoseVector &gt)
   return (cMo.getTranslationVector() - cMoGt.getTranslationVector()).frobeniusNorm();
 }
 
-bool isFinite(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i)
-    for (unsigned int j = 0; j < 4; ++j)
-      if (!std::isfinite(M[i][j]))
-        return false;
-  return true;
-}
-
 const char *name(vpSSLTrackerState s)
 {
   switch (s) {
@@ -165,7 +158,7 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
     }
     double trackerError = std::numeric_limits<double>::quiet_NaN();
     if (tracker.hasPose() && f.hasGroundTruth) {
-      ASSERT_TRUE(isFinite(tracker.getPose()));
+      ASSERT_TRUE(sslt::isFinite(tracker.getPose()));
       trackerError = positionError(tracker.getPose(), f.cMo);
       if (state == SSL_TRACKER_TRACKING)
         trackerErrors.push_back(trackerError);
@@ -233,7 +226,7 @@ TEST(Tracker, StateMachineFollowsTheTarget)
   const vpHomogeneousMatrix oMv(s.frames[i].oMv);
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
   EXPECT_EQ(tracker.getNbLandmarks(), 0u);
-  EXPECT_TRUE(isFinite(tracker.getPose()));
+  EXPECT_TRUE(sslt::isFinite(tracker.getPose()));
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
   EXPECT_TRUE(tracker.getLastSearchWasFull()); // lost: the whole image is searched
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
@@ -243,7 +236,7 @@ TEST(Tracker, StateMachineFollowsTheTarget)
 
   // The target back: acquired again from a whole-image search.
   EXPECT_EQ(tracker.track(s.images[i], oMv), SSL_TRACKER_ACQUIRED);
-  EXPECT_TRUE(isFinite(tracker.getPose()));
+  EXPECT_TRUE(sslt::isFinite(tracker.getPose()));
   EXPECT_LT(positionError(tracker.getPose(), s.frames[i].cMo), 0.2);
 }
 
@@ -266,7 +259,7 @@ double trackWithOdometry(const Sequence &s, bool corrupt, unsigned int &rejected
     if (tracker.hasPose() && !tracker.getLastOdometryUsed())
       ++rejected;
     if (tracker.hasPose()) {
-      EXPECT_TRUE(isFinite(tracker.getPose())) << "frame " << i;
+      EXPECT_TRUE(sslt::isFinite(tracker.getPose())) << "frame " << i;
       for (const vpFeaturePoint &p : tracker.getFeaturePoints())
         EXPECT_TRUE(std::isfinite(p.get_x()) && std::isfinite(p.get_y()) && std::isfinite(p.get_Z()));
     }
