@@ -1,0 +1,194 @@
+/*!
+  \file vpSSLHomingBehaviour.h
+  \brief Homing and docking state machine of the paper's Sec. 5.2: search, align, home, dock.
+*/
+#ifndef VP_SSL_HOMING_BEHAVIOUR_H
+#define VP_SSL_HOMING_BEHAVIOUR_H
+
+#include <string>
+
+#include <visp3/core/vpColVector.h>
+#include <visp3/robot/vpRobot.h>
+#include <visp3/ssl/vpSSLConfig.h>
+#include <visp3/ssl/vpSSLServoInput.h>
+#include <visp3/ssl/vpSSLServoLaw.h>
+
+/*!
+  \enum vpSSLHomingState
+  \ingroup group_ssl_servo
+  \brief State of vpSSLHomingBehaviour.
+*/
+enum vpSSLHomingState
+{
+  SSL_HOMING_SEARCH, ///< No target: spin about the vertical axis while the depth oscillates.
+  SSL_HOMING_ALIGN,  ///< Target seen: turn (yaw, pitch) until it is centred in the image.
+  SSL_HOMING_HOME,   ///< Servo law holding the stand-off.
+  SSL_HOMING_DOCK,   ///< Servo law with stand-off 0 until the front collision sensor trips.
+  SSL_HOMING_DOCKED  ///< Collision while docking: zero command until reset().
+};
+
+/*!
+  \class vpSSLHomingBehaviour
+  \ingroup group_ssl_servo
+  \brief The homing behaviour of the paper's Sec. 5.2 as a state machine driving vpSSLServoLaw.
+
+  Call update() once per frame with the time, the target input, the vehicle depth and the collision flag; it
+  returns the vehicle-axes command (vpSSLVehicleAxis order: surge, sway, heave, roll, pitch, yaw rates in the
+  vehicle frame x forward, y starboard, z down). apply() sends the last command to any vpRobot.
+
+  The target is \e seen at a frame when the input is valid with at least setMinPoints() measured points
+  (nbPoints). Transitions, evaluated in update():
+  - SEARCH: seen -> ALIGN. Command: yaw rate setSearchPattern() and heave tracking a depth that oscillates
+    between the pattern's two depths (triangle wave), so that a target above or below is swept.
+  - ALIGN: the target centre within setAlignTolerance() of the optical axis -> HOME (-> DOCK if docking was
+    requested). Command: vpSSLServoLaw::computeCentringLaw() (pitch and yaw only).
+  - HOME: docking requested (startDocking(), or setAutoDock() after holding the stand-off) -> DOCK. Command:
+    vpSSLServoLaw::computeControlLaw() at the stand-off.
+  - DOCK: collision -> DOCKED. Command: the servo law with stand-off 0. When the target is lost within
+    setBlindDockRange() of the camera (too close to be seen whole), the last surge is held (at least
+    setBlindDockSpeed()) with the other axes at zero.
+  - ALIGN, HOME, DOCK: not seen for more than setLostTimeout() seconds -> SEARCH (the docking request stays).
+    While not seen but the input is still valid (a tracker predicting the pose), the law keeps servoing on the
+    prediction; with an invalid input the command is zero (hover), except the blind docking above.
+  - DOCKED: stays until reset(). A collision outside DOCK is only counted (getCollision()).
+
+  \code
+  vpSSLHomingBehaviour homing;
+  homing.getServoLaw().setCameraToVehicle(vMc);
+  homing.setStandOff(2.0);
+  homing.setAutoDock(20.);                      // dock after 20 s at the stand-off
+  while (homing.getState() != SSL_HOMING_DOCKED) {
+    tracker.track(I, oMv);
+    homing.update(t, vpSSLServoInput::fromTracker(tracker), vehicleDepth, frontCollision);
+    homing.apply(auv);                          // vpRobot::ARTICULAR_FRAME: vehicle axes
+  }
+  \endcode
+  See doc/servo.md and test/test_servo_behaviour.cpp.
+*/
+class VISP_SSL_EXPORT vpSSLHomingBehaviour
+{
+public:
+  /*!
+    Behaviour with the defaults: stand-off 2 m; search yaw rate 0.2 rad/s, depth between 1 and 3 m with a
+    period of 40 s, depth gain 0.5 1/s; align tolerance 5 deg; lost timeout 3 s; min points 1; no auto dock;
+    blind docking within 0.6 m at 0.1 m/s at least. The servo law's own defaults (vpSSLServoLaw()).
+  */
+  vpSSLHomingBehaviour();
+
+  //! The servo law (camera mounting, axes, gains, limits). Its stand-off is set by update() from the state.
+  vpSSLServoLaw &getServoLaw() { return m_law; }
+  //! The servo law.
+  const vpSSLServoLaw &getServoLaw() const { return m_law; }
+
+  //! Stand-off held in HOME (m, > 0). \exception vpException if not > 0 and finite.
+  void setStandOff(double Zstar);
+  //! Stand-off held in HOME (m).
+  double getStandOff() const { return m_standOff; }
+  /*!
+    Search pattern: yaw rate (rad/s, sign gives the direction, 0 allowed), depth oscillating between
+    \e depthMin and \e depthMax (m, world depth, positive down) with period \e period (s); heave = depthGain
+    (depth reference - depth), saturated by the law's heave limit.
+    \exception vpException if not finite, depthMin > depthMax, or period or depthGain not > 0.
+  */
+  void setSearchPattern(double yawRate, double depthMin, double depthMax, double period, double depthGain = 0.5);
+  //! Angle between the optical axis and the target centre below which ALIGN ends (rad, default 5 deg).
+  void setAlignTolerance(double angle);
+  //! Time without the target after which ALIGN, HOME or DOCK fall back to SEARCH (s, >= 0, default 3).
+  void setLostTimeout(double seconds);
+  //! Measured points (input nbPoints) needed for the target to count as seen (>= 1, default 1).
+  void setMinPoints(unsigned int n);
+  /*!
+    Automatic docking: after \e holdSeconds in HOME with the range within \e rangeTolerance (m) of the
+    stand-off and the centre within the align tolerance, HOME -> DOCK. holdSeconds < 0 disables it (default).
+  */
+  void setAutoDock(double holdSeconds, double rangeTolerance = 0.1);
+  //! Blind final approach: range (m) below which a lost target in DOCK keeps the surge, and its minimum speed.
+  void setBlindDock(double range, double minSpeed);
+  //! Requests docking: HOME -> DOCK at the next update() (ALIGN -> DOCK directly once aligned).
+  void startDocking() { m_dockRequested = true; }
+  //! Cancels a docking request; DOCK -> HOME at the next update().
+  void stopDocking() { m_dockRequested = false; }
+  //! Whether docking is requested.
+  bool getDockingRequested() const { return m_dockRequested; }
+
+  /*!
+    One control step.
+    \param t : time (s), non-decreasing; a non-finite or decreasing time keeps the previous one.
+    \param input : the target at this frame (vpSSLServoInput::none() when nothing was found).
+    \param vehicleDepth : vehicle depth (m, positive down; NaN if unknown: the search pattern then does not heave).
+    \param collision : the front collision sensor.
+    \return the vehicle-axes command (6-vector), always finite and within the law's limits.
+  */
+  vpColVector update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision);
+
+  /*!
+    Sends the last command to \e robot: vpRobot::ARTICULAR_FRAME sends the vehicle-axes command (an AUV
+    simulator or driver), vpRobot::CAMERA_FRAME its camera twist (vpSimulatorCamera, arms). Puts the robot in
+    velocity control first if it is not.
+    \exception vpException for any other frame.
+  */
+  void apply(vpRobot &robot, vpRobot::vpControlFrameType frame = vpRobot::ARTICULAR_FRAME) const;
+
+  //! Back to SEARCH, timers and docking request cleared.
+  void reset();
+
+  //! Current state.
+  vpSSLHomingState getState() const { return m_state; }
+  //! Name of a state ("search", "align", "home", "dock", "docked").
+  static std::string getStateName(vpSSLHomingState state);
+  //! Time spent in the current state (s).
+  double getTimeInState() const { return m_time - m_stateStart; }
+  //! Whether the target was seen at the last update().
+  bool getTargetSeen() const { return m_seen; }
+  //! Time since the target was last seen (s; infinity if never).
+  double getTimeSinceSeen() const;
+  //! Range (depth of the target centre, m) of the last update()'s input; NaN when it was not usable.
+  double getRange() const { return m_range; }
+  //! Depth reference of the search pattern at the last update() (m; NaN outside SEARCH).
+  double getSearchDepth() const { return m_searchDepth; }
+  //! Last vehicle-axes command.
+  const vpColVector &getVelocity() const { return m_velocity; }
+  //! Camera twist of the last command (camera frame).
+  const vpColVector &getCameraVelocity() const { return m_cameraVelocity; }
+  //! Collisions seen by update() (rising edges).
+  unsigned int getCollision() const { return m_nbCollisions; }
+
+private:
+  void setState(vpSSLHomingState state);
+  vpColVector searchCommand(double vehicleDepth);
+  vpColVector blindDockCommand() const;
+
+  vpSSLServoLaw m_law;
+  double m_standOff;
+  double m_searchYawRate;
+  double m_searchDepthMin;
+  double m_searchDepthMax;
+  double m_searchPeriod;
+  double m_searchDepthGain;
+  double m_alignTolerance;
+  double m_lostTimeout;
+  unsigned int m_minPoints;
+  double m_autoDockHold;
+  double m_autoDockRangeTolerance;
+  double m_blindDockRange;
+  double m_blindDockSpeed;
+
+  vpSSLHomingState m_state;
+  bool m_dockRequested;
+  bool m_started;
+  double m_time;
+  double m_stateStart;
+  double m_lastSeen;
+  double m_holdStart;
+  bool m_seen;
+  bool m_lastCollision;
+  unsigned int m_nbCollisions;
+  double m_lastRange;
+  double m_range;
+  double m_lastSurge;
+  double m_searchDepth;
+  vpColVector m_velocity;
+  vpColVector m_cameraVelocity;
+};
+
+#endif

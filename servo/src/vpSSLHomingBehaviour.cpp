@@ -1,0 +1,320 @@
+#include <visp3/ssl/vpSSLHomingBehaviour.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpMath.h>
+
+namespace {
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+double clamp(double v, double limit)
+{
+  return std::max(-limit, std::min(limit, v));
+}
+} // namespace
+
+vpSSLHomingBehaviour::vpSSLHomingBehaviour()
+    : m_law(), m_standOff(2.), m_searchYawRate(0.2), m_searchDepthMin(1.), m_searchDepthMax(3.), m_searchPeriod(40.),
+      m_searchDepthGain(0.5), m_alignTolerance(vpMath::rad(5.)), m_lostTimeout(3.), m_minPoints(1), m_autoDockHold(-1.),
+      m_autoDockRangeTolerance(0.1), m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_state(SSL_HOMING_SEARCH),
+      m_dockRequested(false), m_started(false), m_time(0.), m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN),
+      m_seen(false), m_lastCollision(false), m_nbCollisions(0), m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.),
+      m_searchDepth(kNaN), m_velocity(6, 0.), m_cameraVelocity(6, 0.)
+{
+  m_law.setStandOff(m_standOff);
+}
+
+void vpSSLHomingBehaviour::setStandOff(double Zstar)
+{
+  if (!std::isfinite(Zstar) || !(Zstar > 0.)) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setStandOff: Zstar: %g is not a finite value > 0 (dock with "
+                      "startDocking())",
+                      Zstar);
+  }
+  m_standOff = Zstar;
+}
+
+void vpSSLHomingBehaviour::setSearchPattern(double yawRate, double depthMin, double depthMax, double period,
+                                            double depthGain)
+{
+  if (!std::isfinite(yawRate) || !std::isfinite(depthMin) || !std::isfinite(depthMax) || !std::isfinite(period) ||
+      !std::isfinite(depthGain) || depthMin > depthMax || !(period > 0.) || !(depthGain > 0.)) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setSearchPattern: yawRate %g, depthMin %g, depthMax %g, period %g, "
+                      "depthGain %g: need finite values, depthMin <= depthMax, period > 0 and depthGain > 0",
+                      yawRate, depthMin, depthMax, period, depthGain);
+  }
+  m_searchYawRate = yawRate;
+  m_searchDepthMin = depthMin;
+  m_searchDepthMax = depthMax;
+  m_searchPeriod = period;
+  m_searchDepthGain = depthGain;
+}
+
+void vpSSLHomingBehaviour::setAlignTolerance(double angle)
+{
+  if (!std::isfinite(angle) || !(angle > 0.) || angle >= M_PI / 2.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setAlignTolerance: angle: %g rad is not in (0, pi/2)", angle);
+  }
+  m_alignTolerance = angle;
+}
+
+void vpSSLHomingBehaviour::setLostTimeout(double seconds)
+{
+  if (!std::isfinite(seconds) || seconds < 0.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setLostTimeout: seconds: %g is not a finite value >= 0", seconds);
+  }
+  m_lostTimeout = seconds;
+}
+
+void vpSSLHomingBehaviour::setMinPoints(unsigned int n)
+{
+  if (n == 0) {
+    throw vpException(vpException::badValue, "vpSSLHomingBehaviour::setMinPoints: n: 0, need at least 1");
+  }
+  m_minPoints = n;
+}
+
+void vpSSLHomingBehaviour::setAutoDock(double holdSeconds, double rangeTolerance)
+{
+  if (!std::isfinite(holdSeconds) || !std::isfinite(rangeTolerance) || !(rangeTolerance > 0.)) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setAutoDock: holdSeconds %g, rangeTolerance %g: need finite values "
+                      "and rangeTolerance > 0",
+                      holdSeconds, rangeTolerance);
+  }
+  m_autoDockHold = holdSeconds;
+  m_autoDockRangeTolerance = rangeTolerance;
+}
+
+void vpSSLHomingBehaviour::setBlindDock(double range, double minSpeed)
+{
+  if (!std::isfinite(range) || !std::isfinite(minSpeed) || range < 0. || minSpeed < 0.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setBlindDock: range %g, minSpeed %g: need finite values >= 0", range,
+                      minSpeed);
+  }
+  m_blindDockRange = range;
+  m_blindDockSpeed = minSpeed;
+}
+
+std::string vpSSLHomingBehaviour::getStateName(vpSSLHomingState state)
+{
+  switch (state) {
+  case SSL_HOMING_SEARCH:
+    return "search";
+  case SSL_HOMING_ALIGN:
+    return "align";
+  case SSL_HOMING_HOME:
+    return "home";
+  case SSL_HOMING_DOCK:
+    return "dock";
+  case SSL_HOMING_DOCKED:
+    return "docked";
+  }
+  return "unknown";
+}
+
+double vpSSLHomingBehaviour::getTimeSinceSeen() const
+{
+  return m_time - m_lastSeen;
+}
+
+void vpSSLHomingBehaviour::reset()
+{
+  m_state = SSL_HOMING_SEARCH;
+  m_dockRequested = false;
+  m_started = false;
+  m_time = 0.;
+  m_stateStart = 0.;
+  m_lastSeen = -kInf;
+  m_holdStart = kNaN;
+  m_seen = false;
+  m_lastCollision = false;
+  m_nbCollisions = 0;
+  m_lastRange = kInf;
+  m_range = kNaN;
+  m_lastSurge = 0.;
+  m_searchDepth = kNaN;
+  m_velocity = vpColVector(6, 0.);
+  m_cameraVelocity = vpColVector(6, 0.);
+}
+
+void vpSSLHomingBehaviour::setState(vpSSLHomingState state)
+{
+  if (state != m_state) {
+    m_state = state;
+    m_stateStart = m_time;
+    m_holdStart = kNaN;
+  }
+}
+
+vpColVector vpSSLHomingBehaviour::searchCommand(double vehicleDepth)
+{
+  const vpColVector &vmax = m_law.getVelocityLimits();
+  vpColVector v(6, 0.);
+  // Triangle wave between the two depths, starting at the shallow one, so that the camera sweeps the water
+  // column at a constant heave speed (a sine would linger at the extremes).
+  const double phase = std::fmod(std::max(0., getTimeInState()), m_searchPeriod) / m_searchPeriod;
+  const double tri = phase < 0.5 ? 2. * phase : 2. - 2. * phase;
+  m_searchDepth = m_searchDepthMin + (m_searchDepthMax - m_searchDepthMin) * tri;
+  if (m_law.getAxisEnabled(SSL_AXIS_YAW)) {
+    v[SSL_AXIS_YAW] = clamp(m_searchYawRate, vmax[SSL_AXIS_YAW]);
+  }
+  if (m_law.getAxisEnabled(SSL_AXIS_HEAVE) && std::isfinite(vehicleDepth)) {
+    v[SSL_AXIS_HEAVE] = clamp(m_searchDepthGain * (m_searchDepth - vehicleDepth), vmax[SSL_AXIS_HEAVE]);
+  }
+  return v;
+}
+
+vpColVector vpSSLHomingBehaviour::blindDockCommand() const
+{
+  vpColVector v(6, 0.);
+  const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
+  v[SSL_AXIS_SURGE] = std::min(std::max(m_lastSurge, m_blindDockSpeed), vmax);
+  return v;
+}
+
+vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision)
+{
+  if (!m_started) {
+    m_started = true;
+    m_time = std::isfinite(t) ? t : 0.;
+    m_stateStart = m_time;
+  } else if (std::isfinite(t) && t >= m_time) {
+    m_time = t;
+  }
+  if (collision && !m_lastCollision) {
+    ++m_nbCollisions;
+  }
+  m_lastCollision = collision;
+
+  double xc, yc, Zc;
+  const bool usable = vpSSLServoLaw::getTargetCentre(input, xc, yc, Zc);
+  m_range = Zc;
+  if (usable) {
+    m_lastRange = Zc;
+  }
+  m_seen = usable && input.nbPoints >= m_minPoints;
+  if (m_seen) {
+    m_lastSeen = m_time;
+  }
+  const bool lostTooLong = !m_seen && (m_time - m_lastSeen > m_lostTimeout);
+  // Angle between the optical axis and the ray to the target centre.
+  const double centreAngle = usable ? std::atan(std::sqrt(xc * xc + yc * yc)) : kInf;
+
+  // Transitions; a chain (SEARCH -> ALIGN -> HOME) may happen in one step, the guard bounds it.
+  for (int guard = 0; guard < 5; ++guard) {
+    const vpSSLHomingState before = m_state;
+    switch (m_state) {
+    case SSL_HOMING_SEARCH:
+      if (m_seen) {
+        setState(SSL_HOMING_ALIGN);
+      }
+      break;
+    case SSL_HOMING_ALIGN:
+      if (lostTooLong) {
+        setState(SSL_HOMING_SEARCH);
+      } else if (m_seen && centreAngle < m_alignTolerance) {
+        setState(m_dockRequested ? SSL_HOMING_DOCK : SSL_HOMING_HOME);
+      }
+      break;
+    case SSL_HOMING_HOME:
+      if (lostTooLong) {
+        setState(SSL_HOMING_SEARCH);
+      } else if (m_dockRequested) {
+        setState(SSL_HOMING_DOCK);
+      }
+      break;
+    case SSL_HOMING_DOCK:
+      if (collision) {
+        setState(SSL_HOMING_DOCKED);
+      } else if (lostTooLong) {
+        setState(SSL_HOMING_SEARCH);
+      } else if (!m_dockRequested) {
+        setState(SSL_HOMING_HOME);
+      }
+      break;
+    case SSL_HOMING_DOCKED:
+      break;
+    }
+    if (m_state == before) {
+      break;
+    }
+  }
+
+  vpColVector v(6, 0.);
+  if (m_state != SSL_HOMING_SEARCH) {
+    m_searchDepth = kNaN;
+  }
+  switch (m_state) {
+  case SSL_HOMING_SEARCH:
+    v = searchCommand(vehicleDepth);
+    m_lastRange = kInf;
+    break;
+  case SSL_HOMING_ALIGN:
+    if (usable) {
+      v = m_law.computeCentringLaw(input);
+    }
+    break;
+  case SSL_HOMING_HOME:
+    if (usable) {
+      m_law.setStandOff(m_standOff);
+      v = m_law.computeControlLaw(input);
+      const bool holding = m_seen && std::fabs(Zc - m_standOff) < m_autoDockRangeTolerance &&
+                           centreAngle < m_alignTolerance && m_law.getStatus() == SSL_SERVO_OK;
+      if (m_autoDockHold >= 0. && holding) {
+        if (!std::isfinite(m_holdStart)) {
+          m_holdStart = m_time;
+        }
+        if (m_time - m_holdStart >= m_autoDockHold) {
+          m_dockRequested = true; // DOCK from the next update()
+        }
+      } else {
+        m_holdStart = kNaN;
+      }
+    }
+    break;
+  case SSL_HOMING_DOCK:
+    if (usable) {
+      m_law.setStandOff(0.);
+      v = m_law.computeControlLaw(input);
+      if (m_law.getStatus() == SSL_SERVO_OK && Zc < m_blindDockRange) {
+        // Final approach: the log-depth feature slows down exponentially near its floor, so a minimum surge
+        // makes sure the nose reaches the target and trips the collision sensor.
+        const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
+        v[SSL_AXIS_SURGE] = std::min(std::max(v[SSL_AXIS_SURGE], m_blindDockSpeed), vmax);
+      }
+      m_lastSurge = v[SSL_AXIS_SURGE];
+    } else if (m_lastRange < m_blindDockRange) {
+      v = blindDockCommand();
+    }
+    break;
+  case SSL_HOMING_DOCKED:
+    break;
+  }
+  m_velocity = v;
+  m_cameraVelocity = m_law.toCameraVelocity(v);
+  return m_velocity;
+}
+
+void vpSSLHomingBehaviour::apply(vpRobot &robot, vpRobot::vpControlFrameType frame) const
+{
+  if (frame != vpRobot::ARTICULAR_FRAME && frame != vpRobot::CAMERA_FRAME) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::apply: frame: %d, expected vpRobot::ARTICULAR_FRAME (vehicle axes) or "
+                      "vpRobot::CAMERA_FRAME",
+                      static_cast<int>(frame));
+  }
+  if (robot.getRobotState() != vpRobot::STATE_VELOCITY_CONTROL) {
+    robot.setRobotState(vpRobot::STATE_VELOCITY_CONTROL);
+  }
+  robot.setVelocity(frame, frame == vpRobot::CAMERA_FRAME ? m_cameraVelocity : m_velocity);
+}
