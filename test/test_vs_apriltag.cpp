@@ -1,0 +1,165 @@
+// Tests of the SSL vs AprilTag benchmark (issue 6): the AprilTag baseline's pose error on ViSP's own AprilTag
+// benchmark images, and the arithmetic of the report (range bands, rates, range90, percentiles, pose errors).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <visp3/core/vpIoTools.h>
+#include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLRenderer.h>
+
+#include "../tutorial/ssl_apriltag_baseline.h"
+
+namespace {
+const std::string kVispBenchmark = std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/benchmark/640x480";
+
+sslbench::FrameResult frame(double range, bool detected)
+{
+  sslbench::FrameResult f;
+  f.truthKnown = true;
+  f.hasTarget = true;
+  f.range = range;
+  f.detected = detected;
+  f.timeMs = 1.;
+  return f;
+}
+} // namespace
+
+// The baseline is a fair one: on ViSP's rendered benchmark image (the setup of ViSP's testAprilTag) it finds the
+// five tags and its poses are within a few millimetres and a third of a degree of the truth, well inside the
+// bounds ViSP's own test allows (RMS translation 0.025-0.13 m, RMS theta-u 0.04-0.18 rad).
+TEST(AprilTagBaseline, PoseErrorOnVispBenchmarkImages)
+{
+  if (!vpIoTools::checkFilename(kVispBenchmark + "/tag36_11_640x480.png"))
+    GTEST_SKIP() << "visp-images-data not installed: " << kVispBenchmark;
+  const std::vector<sslbench::VispBenchmarkResult> res = sslbench::runOnVispBenchmark(kVispBenchmark);
+  ASSERT_EQ(res.size(), 5u);
+  for (size_t i = 0; i < res.size(); ++i) {
+    SCOPED_TRACE("tag " + std::to_string(i));
+    ASSERT_EQ(res[i].id, static_cast<int>(i)) << "not detected";
+    // Measured 1.5 / 2.4 / 19.8 / 6.0 / 6.8 mm and 0.11-0.30 deg (tag 2 is seen at a grazing angle).
+    EXPECT_LT(res[i].positionError, 0.03);
+    EXPECT_LT(res[i].angleError, 0.5);
+    EXPECT_LT(res[i].rmsTranslation, 0.025); // the tightest of ViSP's bounds
+    EXPECT_LT(res[i].rmsThetaU, 0.04);
+  }
+}
+
+// The baseline recovers the rendered A3 sheet's pose in the tag frame the sequences use as ground truth.
+TEST(AprilTagBaseline, FindsRenderedA3SheetPose)
+{
+  vpCameraParameters cam(554., 554., 320., 240.);
+  const vpSSLAprilTagSheet sheet = vpSSLAprilTagSheet::a3(0);
+  vpSSLRenderer renderer(cam, 640, 480);
+  renderer.setAprilTagSheet(sheet);
+  const vpHomogeneousMatrix cMo(0.1, -0.05, 2., vpMath::rad(170.), vpMath::rad(10.), vpMath::rad(5.));
+  vpImage<unsigned char> I;
+  renderer.render(cMo, I);
+  sslbench::AprilTagBaseline baseline(sheet, cam);
+  ASSERT_TRUE(baseline.detect(I));
+  EXPECT_EQ(baseline.getNbOthers(), 0u);
+  EXPECT_LT(sslbench::positionError(baseline.getPose(), cMo), 0.02);
+  EXPECT_LT(sslbench::angleError(baseline.getPose(), cMo), 2.);
+  // Another id on the same sheet is not the target: no detection of it, one "other" tag.
+  sslbench::AprilTagBaseline other(vpSSLAprilTagSheet::a3(1), cam);
+  EXPECT_FALSE(other.detect(I));
+  EXPECT_EQ(other.getNbOthers(), 1u);
+}
+
+TEST(BenchmarkArithmetic, BandsCoverZeroToTwelveMetres)
+{
+  EXPECT_EQ(sslbench::bandIndex(0.), 0);
+  EXPECT_EQ(sslbench::bandIndex(0.999), 0);
+  EXPECT_EQ(sslbench::bandIndex(1.), 1);
+  EXPECT_EQ(sslbench::bandIndex(3.9), 2);
+  EXPECT_EQ(sslbench::bandIndex(4.), 3);
+  EXPECT_EQ(sslbench::bandIndex(8.), 4);
+  EXPECT_EQ(sslbench::bandIndex(12.), 4);
+  EXPECT_EQ(sslbench::bandIndex(12.01), -1);
+  EXPECT_EQ(sslbench::bandIndex(-0.1), -1);
+  EXPECT_EQ(sslbench::bandIndex(sslbench::kNaN), -1);
+  EXPECT_EQ(sslbench::bandLabel(0), "0-1");
+  EXPECT_EQ(sslbench::bandLabel(4), "8-12");
+}
+
+TEST(BenchmarkArithmetic, RatesPerBandAndFalseDetections)
+{
+  sslbench::Stats s;
+  s.add(frame(0.5, true));
+  s.add(frame(1.5, true));
+  s.add(frame(1.6, false));
+  s.add(frame(5., true));
+  s.add(frame(5.2, true));
+  s.add(frame(5.4, false));
+  s.add(frame(20., false)); // beyond the bands: counted in the overall rate only
+  sslbench::FrameResult none;
+  none.truthKnown = true;
+  none.hasTarget = false;
+  none.detected = true;
+  none.falseDetection = true;
+  s.add(none);
+  EXPECT_EQ(s.nbFrames, 8u);
+  EXPECT_EQ(s.nbWithTarget, 7u);
+  EXPECT_EQ(s.nbDetected, 4u);
+  EXPECT_EQ(s.nbNoTarget, 1u);
+  EXPECT_EQ(s.nbFalse, 1u);
+  EXPECT_DOUBLE_EQ(s.rate(), 4. / 7.);
+  EXPECT_DOUBLE_EQ(s.bandRate(0), 1.);
+  EXPECT_DOUBLE_EQ(s.bandRate(1), 0.5);
+  EXPECT_TRUE(std::isnan(s.bandRate(2)));
+  EXPECT_DOUBLE_EQ(s.bandRate(3), 2. / 3.);
+  EXPECT_TRUE(std::isnan(s.bandRate(4)));
+}
+
+TEST(BenchmarkArithmetic, Range90IsTheFarthestBinDetectedNineTimesInTen)
+{
+  sslbench::Stats s;
+  for (int i = 0; i < 10; ++i)
+    s.add(frame(2.1, true)); // bin [2, 2.5): 10/10
+  for (int i = 0; i < 10; ++i)
+    s.add(frame(4.2, i != 0)); // bin [4, 4.5): 9/10, still >= 90 %
+  for (int i = 0; i < 10; ++i)
+    s.add(frame(6.3, i > 1)); // bin [6, 6.5): 8/10
+  EXPECT_DOUBLE_EQ(s.range90(0.5, 0.9), 4.5);
+  EXPECT_DOUBLE_EQ(s.range90(0.5, 0.8), 6.5);
+  EXPECT_DOUBLE_EQ(s.range90(1., 0.9), 5.);
+  sslbench::Stats empty;
+  EXPECT_TRUE(std::isnan(empty.range90()));
+}
+
+TEST(BenchmarkArithmetic, RecordingWithoutTruthGivesTheRateOfFramesWithADetection)
+{
+  sslbench::Stats s;
+  for (int i = 0; i < 4; ++i) {
+    sslbench::FrameResult f;
+    f.detected = (i < 3);
+    f.timeMs = i + 1.;
+    s.add(f);
+  }
+  EXPECT_EQ(s.nbWithTarget, 0u);
+  EXPECT_DOUBLE_EQ(s.rate(), 0.75);
+  EXPECT_TRUE(std::isnan(s.range90()));
+  EXPECT_DOUBLE_EQ(sslbench::percentile(s.time, 50.), 2.5);
+}
+
+TEST(BenchmarkArithmetic, PercentilesInterpolateAndSkipNaN)
+{
+  EXPECT_DOUBLE_EQ(sslbench::percentile({3., 1., 2.}, 50.), 2.);
+  EXPECT_DOUBLE_EQ(sslbench::percentile({1., 2., 3., 4.}, 50.), 2.5);
+  EXPECT_NEAR(sslbench::percentile({0., 10., 20., 30., 40., 50., 60., 70., 80., 90., 100.}, 95.), 95., 1e-12);
+  EXPECT_DOUBLE_EQ(sslbench::percentile({sslbench::kNaN, 5.}, 50.), 5.);
+  EXPECT_TRUE(std::isnan(sslbench::percentile({}, 50.)));
+}
+
+TEST(BenchmarkArithmetic, PoseErrors)
+{
+  const vpHomogeneousMatrix truth(0.1, 0.2, 3., 0.1, -0.2, 0.3);
+  const vpHomogeneousMatrix turned = truth * vpHomogeneousMatrix(0., 0., 0., 0., 0., vpMath::rad(7.));
+  EXPECT_NEAR(sslbench::angleError(turned, truth), 7., 1e-9);
+  EXPECT_NEAR(sslbench::positionError(turned, truth), 0., 1e-12);
+  const vpHomogeneousMatrix moved(0.1, 0.2 + 0.03, 3. + 0.04, 0.1, -0.2, 0.3);
+  EXPECT_NEAR(sslbench::positionError(moved, truth), 0.05, 1e-12);
+  EXPECT_NEAR(sslbench::angleError(moved, truth), 0., 1e-4); // acos near 1
+}
