@@ -10,10 +10,16 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 "$bin" --help > "$work/help" || fail "--help exit code"
-for opt in --input --camera --camera-name --target --json --output --display --window --threshold --no-normalize \
-           --threads --max-frames --help; do
+for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks \
+           --threshold --no-normalize --threads --max-frames --help; do
   grep -q -- "$opt" "$work/help" || fail "--help does not mention $opt"
 done
+
+# Small-landmark mode sees B at 4.8 m (11.5 px) in the recorded clear-water approach, where the default mode cannot.
+"$bin" --input "$data/sequences/approach-clear/images/000006.png" --small-landmarks --json --output "$work/small" \
+  > "$work/small.jsonl" 2> /dev/null || fail "--small-landmarks exit code $?"
+python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["found"] and "B" in t["landmarks"], t' \
+  "$work/small.jsonl" || fail "--small-landmarks does not find B at 4.8 m"
 
 # A sequence of the demo images with a camera: one JSON object per image on stdout, nothing else.
 "$bin" --input "$data/images/ssl3-a3-%02d.png" --camera "$data/camera/camera-640x480.xml" --json \

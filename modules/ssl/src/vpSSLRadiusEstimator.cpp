@@ -472,6 +472,7 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
     }
   }
   double best = 0.;
+  unsigned int mostRays = 0;
   for (int i = 0; i <= maxLevel - minLevel; ++i) {
     for (int d = 0; d < 8; ++d) {
       if (pickScore[i][d] > 0.) {
@@ -480,9 +481,13 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
       }
     }
     best = std::max(best, total[i]);
+    mostRays = std::max(mostRays, support[i]);
   }
+  // The landmark's own level is read by (nearly) every ray that reads anything; the paper's edge beyond a
+  // landmark near the sheet's border, against darker water, extends the pattern by one level on the rays
+  // that point at it only, and those rays can still score well.
   for (int i = maxLevel - minLevel; i >= 0; --i) {
-    if (support[i] >= 3 && total[i] >= kLevelShare * best) {
+    if (support[i] >= 3 && support[i] + 1 >= mostRays && total[i] >= kLevelShare * best) {
       for (int d = 0; d < 8; ++d) {
         ok[d] = pickScore[i][d] > 0.;
         R[d] = ok[d] ? pick[i][d] : 0.;
