@@ -21,6 +21,8 @@ const double kGridRatio = 1.02;
 const double kClearRingWidth = 2.5;
 // How far the outermost ring's level may stray from the inner black rings', relative to the ring contrast.
 const double kInkTolerance = 0.3;
+// The same on the dark side when fewer than two ring pairs are clearly resolvable.
+const double kBlurredInkTolerance = 0.6;
 // Share of a solid ring's interior samples that must be on its side of the mid level.
 const double kSolidRing = 0.85;
 // Largest residual of the half-turn comparison (symmetryCentre()), relative to the disc's variance (clutter
@@ -230,7 +232,10 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   }
   black /= nbBlack;
   white /= nbWhite;
-  if (std::fabs(level[0] - black) > kInkTolerance * (white - black)) {
+  // Rings too thin to be clearly resolved (a small landmark, >= 3 pairs read) are greyed by the lens and
+  // the water's blur: their black reads lighter than the wider outermost ring's, never darker.
+  const double darkTolerance = (nbExpected >= 2 || nbPairsOut < 3) ? kInkTolerance : kBlurredInkTolerance;
+  if (level[0] - black > kInkTolerance * (white - black) || black - level[0] > darkTolerance * (white - black)) {
     return -1e30;
   }
   return score; // solidRings() is the caller's last test, the dearest
