@@ -172,7 +172,7 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
               "%u gate re-initialisations\n",
               trackerMedian, trackerErrors.size(), singleMedian, singleErrors.size(), tracker.getNbReinitialisations());
   if (!GetParam()) {
-    // The recorded sample: the detector finds the target only at the last two frames (1.4 m and 0.5 m), so the
+    // The recorded sample: the detector finds the target only at the last three frames (2.2 m to 0.5 m), so the
     // tracker can only be required to take the target as soon as the detector sees it.
     ASSERT_FALSE(singleErrors.empty());
     EXPECT_TRUE(acquiredWhenSeen);
@@ -180,8 +180,9 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
   }
   EXPECT_TRUE(reachedTracking);
   ASSERT_GE(trackerErrors.size(), 20u);
-  // Measured 0.015 m (single frame 0.005 m on these noise-free images, see the report).
-  EXPECT_LT(trackerMedian, 0.03);
+  // Measured 0.005 m: on these noise-free images the pose is the single-frame hypothesis the filter accepts
+  // (vpSSLTracker::setSelectionGate()); the filter's mean alone was 0.015 m.
+  EXPECT_LT(trackerMedian, 0.01);
 }
 
 // false: the recorded sample approach-clear; true: the same approach rendered noise-free at 10 fps.
@@ -202,7 +203,8 @@ TEST(Tracker, StateMachineFollowsTheTarget)
 
   std::vector<vpSSLTrackerState> states;
   size_t i = 0;
-  for (; i < s.frames.size() && tracker.getState() != SSL_TRACKER_TRACKING; ++i) {
+  // Until tracking with a known orientation (three landmarks seen): before it the whole image is searched.
+  for (; i < s.frames.size() && !(tracker.getState() == SSL_TRACKER_TRACKING && tracker.getOrientationKnown()); ++i) {
     states.push_back(tracker.track(s.images[i], vpHomogeneousMatrix(s.frames[i].oMv)));
   }
   ASSERT_EQ(tracker.getState(), SSL_TRACKER_TRACKING);

@@ -1,0 +1,446 @@
+//! \example tutorial-ssl-tracker.cpp
+//! Tracks the ssl3-a3 target over a recorded sequence with vpSSLTracker and writes the estimate beside the
+//! ground truth.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpFont.h>
+#include <visp3/core/vpImageConvert.h>
+#include <visp3/core/vpImageDraw.h>
+#include <visp3/core/vpIoTools.h>
+#include <visp3/core/vpMeterPixelConversion.h>
+#include <visp3/core/vpThetaUVector.h>
+#include <visp3/gui/vpDisplayX.h>
+#include <visp3/io/vpImageIo.h>
+#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl/vpSSLTracker.h>
+
+namespace {
+const char *kUsage = R"(Usage: tutorial-ssl-tracker --sequence DIR [options]
+
+Tracks the target of a recorded sequence (../shared/spec/sequence-format.md) with vpSSLTracker:
+detector in regions of interest, single-frame pose hypotheses and a particle filter driven by the
+vehicle odometry (paper Sec. 3.3). Uses the sequence's camera.xml, its camera_to_vehicle and, when
+present, its odometry columns. Prints one line per frame and writes a CSV of the estimate beside
+the ground truth (when the sequence has it).
+
+Options:
+  --sequence DIR        Recorded sequence folder. Required.
+  --csv FILE            CSV written (default: ssl-tracker.csv; "-": standard output, the per-frame
+                        lines then go to stderr). Columns: frame, t, state, nb_points, full_search,
+                        small_mode, orientation_known, tx ty tz tux tuy tuz (estimated cMo,
+                        theta-u), gt_* (ground truth), range (m), position_error (m, of the target
+                        origin; without a known orientation, of the landmark centre the filter
+                        holds, and no angle), angle_error_deg, single_* (the best
+                        single-frame hypothesis of the same image: its kind full|position, its
+                        position and angle errors; for a position-only hypothesis the position
+                        error is that of the landmark centre it holds, and it has no angle).
+                        Empty cells where a value does not exist.
+  --output-dir DIR      Write an annotated image DIR/<frame>.png per frame: projected landmark
+                        circles from the estimated pose (green tracking, yellow acquired, red lost),
+                        the target frame axes, detected centres (cyan crosses), regions of
+                        interest (blue), the state.
+  --display             Show the annotated images in a window (needs an X display).
+  --no-odometry         Ignore the odometry columns (random-walk prediction).
+  --small-landmarks M   Detector scale: auto (default, vpSSLTracker's switch from the predicted
+                        radii), on (always the small-landmark mode) or off (never).
+  --particles N         Particles of the filter, 1 to 1000000 (default 1000).
+  --seed S              Seed of the particle filter (default 1).
+  --full-search N       Full-image search at least every N frames while tracking (default 10).
+  --max-frames N        Stop after N frames (default: all).
+  --quiet               No per-frame lines.
+  --summary             After the run, print a Markdown table per range band (0-1, 1-2, 2-4, 4-8,
+                        8+ m, from the ground truth): frames, then for the single-frame pose and
+                        for the tracker (frames in the tracking state) the frames with an estimate
+                        and the median and 90th percentile of the position and angle errors, as
+                        in the CSV (doc/benchmarks.md).
+  --help                This help.
+
+Exit status: 0 on success, 1 when the sequence cannot be read (an error in the middle of it
+stops the run; the frames before it are in the CSV), 2 on a bad option.
+)";
+
+[[noreturn]] void fail(const std::string &msg, int code)
+{
+  std::cerr << "tutorial-ssl-tracker: " << msg << std::endl;
+  std::exit(code);
+}
+
+const char *stateName(vpSSLTrackerState s)
+{
+  switch (s) {
+  case SSL_TRACKER_SEARCHING:
+    return "searching";
+  case SSL_TRACKER_ACQUIRED:
+    return "acquired";
+  case SSL_TRACKER_TRACKING:
+    return "tracking";
+  case SSL_TRACKER_LOST:
+    return "lost";
+  }
+  return "?";
+}
+
+std::string cell(double x, int digits)
+{
+  if (!std::isfinite(x)) {
+    return "";
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
+  return buf;
+}
+
+std::string poseCells(const vpHomogeneousMatrix &M, bool valid)
+{
+  const vpPoseVector p(M);
+  std::string out;
+  for (unsigned int i = 0; i < 6; ++i) {
+    out += (i ? "," : "") + (valid ? cell(p[i], i < 3 ? 6 : 7) : std::string());
+  }
+  return out;
+}
+
+// Angle of the rotation between two poses (degrees).
+double angleError(const vpHomogeneousMatrix &a, const vpHomogeneousMatrix &b)
+{
+  const vpThetaUVector tu(a.getRotationMatrix().t() * b.getRotationMatrix());
+  return vpMath::deg(std::sqrt(tu[0] * tu[0] + tu[1] * tu[1] + tu[2] * tu[2]));
+}
+
+// Distance between the point X of the target frame placed by two poses (m).
+double positionError(const vpHomogeneousMatrix &a, const vpHomogeneousMatrix &b, const vpColVector &X)
+{
+  const vpColVector d = a * X - b * X;
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+// Errors of one estimator in one range band.
+struct BandErrors
+{
+  std::vector<double> position, angle;
+};
+
+double percentile(std::vector<double> v, double q)
+{
+  if (v.empty()) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(std::min<double>(v.size() - 1, std::floor(q * (v.size() - 1) + 0.5)))];
+}
+
+std::string stat(const std::vector<double> &v, double scale, int digits)
+{
+  if (v.empty()) {
+    return "-";
+  }
+  return cell(scale * percentile(v, 0.5), digits) + " / " + cell(scale * percentile(v, 0.9), digits);
+}
+
+// The outer circle of each landmark, projected with cMo.
+void drawTarget(vpImage<vpRGBa> &out, const vpSSLTarget &target, const vpHomogeneousMatrix &cMo,
+                const vpCameraParameters &cam, const vpColor &color)
+{
+  const unsigned int n = 48;
+  for (const vpSSLTargetLandmark &l : target.getLandmarks()) {
+    std::vector<vpImagePoint> polygon;
+    for (unsigned int k = 0; k < n; ++k) {
+      const double a = 2. * M_PI * k / n;
+      const vpColVector X({l.x + l.radius * std::cos(a), l.y + l.radius * std::sin(a), l.z, 1.});
+      const vpColVector c = cMo * X;
+      if (!(c[2] > 0.)) {
+        polygon.clear();
+        break;
+      }
+      double u = 0., v = 0.;
+      vpMeterPixelConversion::convertPoint(cam, c[0] / c[2], c[1] / c[2], u, v);
+      polygon.push_back(vpImagePoint(v, u));
+    }
+    if (!polygon.empty()) {
+      vpImageDraw::drawPolygon(out, polygon, color, 2, true);
+    }
+  }
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  std::string sequence, csvPath = "ssl-tracker.csv", outputDir, smallMode = "auto";
+  bool display = false, useOdometry = true, quiet = false, summary = false;
+  unsigned int particles = 1000, fullSearch = 10;
+  long seed = 1, maxFrames = -1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        fail("option " + a + " needs a value (see --help)", 2);
+      }
+      return argv[++i];
+    };
+    auto count = [&](const std::string &v) {
+      char *end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end != '\0' || !std::isfinite(x) || x < 0. || x != std::floor(x) || x > 1e9) {
+        fail("option " + a + ": not a whole number >= 0: \"" + v + "\"", 2);
+      }
+      return static_cast<long>(x);
+    };
+    if (a == "--help" || a == "-h") {
+      std::cout << kUsage;
+      return 0;
+    } else if (a == "--sequence") {
+      sequence = value();
+    } else if (a == "--csv") {
+      csvPath = value();
+    } else if (a == "--output-dir") {
+      outputDir = value();
+    } else if (a == "--display") {
+      display = true;
+    } else if (a == "--no-odometry") {
+      useOdometry = false;
+    } else if (a == "--small-landmarks") {
+      smallMode = value();
+      if (smallMode != "auto" && smallMode != "on" && smallMode != "off") {
+        fail("option --small-landmarks: expected auto, on or off, got \"" + smallMode + "\"", 2);
+      }
+    } else if (a == "--particles") {
+      const long n = count(value());
+      if (n < 1 || n > 1000000) {
+        fail("option --particles: expected 1 to 1000000 particles, got " + std::to_string(n), 2);
+      }
+      particles = static_cast<unsigned int>(n);
+    } else if (a == "--seed") {
+      seed = count(value());
+    } else if (a == "--full-search") {
+      fullSearch = static_cast<unsigned int>(count(value()));
+    } else if (a == "--max-frames") {
+      maxFrames = count(value());
+    } else if (a == "--quiet") {
+      quiet = true;
+    } else if (a == "--summary") {
+      summary = true;
+    } else {
+      fail("unknown option \"" + a + "\" (see --help)", 2);
+    }
+  }
+  if (sequence.empty()) {
+    fail("--sequence is required (see --help)", 2);
+  }
+  if (csvPath.empty()) {
+    fail("option --csv: empty file name", 2);
+  }
+
+  vpSSLSequenceReader reader;
+  vpSSLTarget target;
+  try {
+    reader.open(sequence);
+    target = vpSSLTarget::fromName(reader.getInfo().target);
+  } catch (const vpException &e) {
+    fail(sequence + ": " + e.getStringMessage(), 1);
+  }
+  const vpCameraParameters &cam = reader.getCameraParameters();
+  vpSSLTracker tracker(target, cam, vpHomogeneousMatrix(reader.getInfo().vMc));
+  try {
+    tracker.getFilter().setNbParticles(particles);
+    tracker.setSeed(seed);
+    tracker.setFullSearchPeriod(fullSearch);
+  } catch (const vpException &e) {
+    fail(e.getStringMessage(), 2);
+  }
+  if (smallMode != "auto") {
+    tracker.setAutomaticSmallLandmarkMode(false);
+    tracker.getDetector().setSmallLandmarkMode(smallMode == "on");
+  }
+
+  std::ofstream csvFile;
+  const bool csvToStdout = csvPath == "-";
+  if (!csvToStdout) {
+    csvFile.open(csvPath);
+    if (!csvFile) {
+      fail(csvPath + ": cannot write the CSV", 2);
+    }
+  }
+  std::ostream &csv = csvToStdout ? std::cout : csvFile;
+  std::ostream &log = csvToStdout ? std::cerr : std::cout;
+  if (!outputDir.empty()) {
+    try {
+      vpIoTools::makeDirectory(outputDir);
+    } catch (const vpException &e) {
+      fail(outputDir + ": cannot create the folder: " + e.getStringMessage(), 2);
+    }
+  }
+  csv << "frame,t,state,nb_points,full_search,small_mode,orientation_known,tx,ty,tz,tux,tuy,tuz,gt_tx,gt_ty,gt_tz,gt_"
+         "tux,gt_tuy,gt_"
+         "tuz,range,position_error,angle_error_deg,single_kind,single_position_error,single_angle_error_deg\n";
+
+  vpSSLSequenceFrame frame;
+  vpImage<unsigned char> I;
+  vpImage<vpRGBa> annotated;
+  vpDisplay *window = nullptr;
+  const vpFont font(16, vpFont::GENERIC_MONOSPACE);
+  const vpColVector origin({0., 0., 0., 1.});
+  long nbFrames = 0, nbTracking = 0;
+  const double bandEdges[] = {0., 1., 2., 4., 8., std::numeric_limits<double>::infinity()};
+  const unsigned int nbBands = 5;
+  std::vector<BandErrors> singleBands(nbBands), trackerBands(nbBands);
+  std::vector<long> bandFrames(nbBands, 0);
+  int status = 0;
+  while (maxFrames < 0 || nbFrames < maxFrames) {
+    try {
+      if (!reader.next(frame, I)) {
+        break;
+      }
+    } catch (const vpException &e) {
+      std::cerr << "tutorial-ssl-tracker: " << e.getStringMessage() << std::endl;
+      status = 1;
+      break;
+    }
+    ++nbFrames;
+    const vpSSLTrackerState state =
+        (useOdometry && frame.hasOdometry) ? tracker.track(I, vpHomogeneousMatrix(frame.oMv)) : tracker.track(I);
+    nbTracking += state == SSL_TRACKER_TRACKING ? 1 : 0;
+    const bool hasPose = tracker.hasPose();
+    const vpHomogeneousMatrix cMo = tracker.getPose();
+    const vpHomogeneousMatrix cMoTrue(frame.cMo);
+    const bool truth = frame.hasGroundTruth;
+
+    // Without a known orientation (one or two landmarks since the acquisition) only the landmark the filter
+    // was placed on is meaningful: its centre is compared, as for a position-only single-frame hypothesis.
+    const bool oriented = hasPose && tracker.getOrientationKnown();
+    double error = std::numeric_limits<double>::quiet_NaN(), angle = error;
+    if (hasPose && truth && oriented) {
+      error = positionError(cMo, cMoTrue, origin);
+      angle = angleError(cMo, cMoTrue);
+    } else if (hasPose && truth) {
+      size_t k = 0;
+      if (!tracker.getHypotheses().empty() && tracker.getHypotheses().front().positionOnly) {
+        k = static_cast<size_t>(tracker.getHypotheses().front().landmark);
+      }
+      const vpSSLTargetLandmark &l = target.getLandmark(k);
+      error = positionError(cMo, cMoTrue, vpColVector({l.x, l.y, l.z, 1.}));
+    }
+    // The best single-frame hypothesis of the same detection: a full pose, or the position of one landmark.
+    std::string singleKind;
+    double singleError = std::numeric_limits<double>::quiet_NaN(), singleAngle = singleError;
+    if (!tracker.getHypotheses().empty()) {
+      const vpSSLPoseHypothesis &h = tracker.getHypotheses().front();
+      singleKind = h.positionOnly ? "position" : "full";
+      if (truth && h.positionOnly) {
+        const vpSSLTargetLandmark &l = target.getLandmark(static_cast<size_t>(h.landmark));
+        const vpColVector X({l.x, l.y, l.z, 1.});
+        const vpColVector d = cMoTrue * X;
+        const vpTranslationVector t = h.cMo.getTranslationVector();
+        singleError = std::sqrt(vpMath::sqr(t[0] - d[0]) + vpMath::sqr(t[1] - d[1]) + vpMath::sqr(t[2] - d[2]));
+      } else if (truth) {
+        singleError = positionError(h.cMo, cMoTrue, origin);
+        singleAngle = angleError(h.cMo, cMoTrue);
+      }
+    }
+    const double range =
+        truth ? cMoTrue.getTranslationVector().frobeniusNorm() : std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int b = 0; truth && b < nbBands; ++b) {
+      if (range >= bandEdges[b] && range < bandEdges[b + 1]) {
+        ++bandFrames[b];
+        if (std::isfinite(singleError)) {
+          singleBands[b].position.push_back(singleError);
+        }
+        if (std::isfinite(singleAngle)) {
+          singleBands[b].angle.push_back(singleAngle);
+        }
+        if (state == SSL_TRACKER_TRACKING && std::isfinite(error)) {
+          trackerBands[b].position.push_back(error);
+        }
+        if (state == SSL_TRACKER_TRACKING && std::isfinite(angle)) {
+          trackerBands[b].angle.push_back(angle);
+        }
+      }
+    }
+    csv << frame.index << "," << cell(frame.t, 6) << "," << stateName(state) << "," << tracker.getNbLandmarks() << ","
+        << (tracker.getLastSearchWasFull() ? 1 : 0) << "," << (tracker.getLastSmallLandmarkMode() ? 1 : 0) << ","
+        << (oriented ? 1 : 0) << "," << poseCells(cMo, hasPose) << "," << poseCells(cMoTrue, truth) << ","
+        << cell(range, 4) << "," << cell(error, 5) << "," << cell(angle, 3) << "," << singleKind << ","
+        << cell(singleError, 5) << "," << cell(singleAngle, 3) << "\n";
+    if (!quiet) {
+      char line[256];
+      std::snprintf(line, sizeof(line), "frame %5u t %8.3f %-9s nbPoints %u%s", frame.index, frame.t, stateName(state),
+                    tracker.getNbLandmarks(), tracker.getLastSmallLandmarkMode() ? " small" : "");
+      log << line;
+      if (hasPose) {
+        const vpTranslationVector t = cMo.getTranslationVector();
+        std::snprintf(line, sizeof(line), " t [%.3f %.3f %.3f] m", t[0], t[1], t[2]);
+        log << line;
+      }
+      if (std::isfinite(error)) {
+        std::snprintf(line, sizeof(line), " error %.3f m %.1f deg", error, angle);
+        log << line;
+      }
+      log << "\n";
+    }
+
+    if (!outputDir.empty() || display) {
+      vpImageConvert::convert(I, annotated);
+      for (const vpRect &r : tracker.getRegionsOfInterest()) {
+        vpImageDraw::drawRectangle(annotated, r, vpColor::blue, false, 1);
+      }
+      for (const vpSSLLandmark &l : tracker.getDetector().getLandmarks()) {
+        vpImageDraw::drawCross(annotated, l.getCenter(), 10, vpColor::cyan, 1);
+      }
+      if (hasPose) {
+        const vpColor color = state == SSL_TRACKER_TRACKING
+                                  ? vpColor::green
+                                  : (state == SSL_TRACKER_ACQUIRED ? vpColor::yellow : vpColor::red);
+        drawTarget(annotated, target, cMo, cam, color);
+        vpImageDraw::drawFrame(annotated, cMo, cam, 0.1, vpColor::none, 2);
+      }
+      font.drawText(annotated,
+                    "frame " + std::to_string(frame.index) + " " + stateName(state) + " nbPoints " +
+                        std::to_string(tracker.getNbLandmarks()),
+                    vpImagePoint(8, 8), vpColor::yellow, vpColor::black);
+      if (!outputDir.empty()) {
+        char name[32];
+        std::snprintf(name, sizeof(name), "/%06u.png", frame.index);
+        try {
+          vpImageIo::write(annotated, outputDir + name);
+        } catch (const vpException &e) {
+          fail(outputDir + name + ": cannot write: " + e.getStringMessage(), 2);
+        }
+      }
+      if (display) {
+        if (window == nullptr) {
+          window = new vpDisplayX(annotated, vpDisplay::SCALE_AUTO);
+          vpDisplay::setTitle(annotated, "tutorial-ssl-tracker");
+        }
+        vpDisplay::display(annotated);
+        vpDisplay::flush(annotated);
+      }
+    }
+  }
+  csv.flush();
+  std::cerr << "tutorial-ssl-tracker: " << nbFrames << " frame(s), tracking in " << nbTracking
+            << (csvToStdout ? std::string() : ", CSV in " + csvPath)
+            << (outputDir.empty() ? std::string() : ", annotated images in " + outputDir + "/") << std::endl;
+  if (summary) {
+    log << "\n| range (m) | frames | single-frame: frames (full) | position error (mm) median / p90 | angle error "
+           "(deg) median / p90 | tracker (tracking): frames | position error (mm) median / p90 | angle error (deg) "
+           "median / "
+           "p90 |\n|---|---|---|---|---|---|---|---|\n";
+    for (unsigned int b = 0; b < nbBands; ++b) {
+      const std::string band =
+          b + 1 < nbBands ? cell(bandEdges[b], 0) + "-" + cell(bandEdges[b + 1], 0) : cell(bandEdges[b], 0) + "+";
+      log << "| " << band << " | " << bandFrames[b] << " | " << singleBands[b].position.size() << " ("
+          << singleBands[b].angle.size() << ") | " << stat(singleBands[b].position, 1000., 1) << " | "
+          << stat(singleBands[b].angle, 1., 2) << " | " << trackerBands[b].position.size() << " | "
+          << stat(trackerBands[b].position, 1000., 1) << " | " << stat(trackerBands[b].angle, 1., 2) << " |\n";
+    }
+  }
+  delete window;
+  return status;
+}
