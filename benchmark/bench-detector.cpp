@@ -3,7 +3,8 @@
   the same rendered views: ssl3-a3 and an A3 AprilTag 36h11 sheet (vpSSLAprilTagSheet) at 1 m, slightly turned,
   through a camera of the same field of view at 320x240, 640x480, 1280x720 and 1920x1080.
 
-  Timed: vpSSLDetector::detect() full frame on one thread and on all of them; the same with three 100x100
+  Timed: vpSSLDetector::detect() full frame on one thread and on all of them (decimated matching pass, the
+  full-resolution default, and at 640x480 also the decimated pass, setDecimation(2)); the same with three 100x100
   regions of interest around the landmarks at 640x480 (the paper's tracking mode); the reference matching
   function alone at 640x480 (the scalar loops the SIMD kernel replaces); vpDetectorAprilTag 36h11 on one
   thread with quad decimate 1 and 2; cv::aruco::detectMarkers with DICT_APRILTAG_36h11 on one thread; and
@@ -104,15 +105,17 @@ template <typename F> void timeLoop(benchmark::State &state, const std::string &
   state.counters["fps"] = benchmark::Counter(1., benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// range: width, height, threads (0: all cores), regions of interest (0/1).
+// range: width, height, threads (0: all cores), regions of interest (0/1), decimation of the matching pass (1/2).
 void BM_SSL(benchmark::State &state)
 {
   const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
   const unsigned int threads = static_cast<unsigned int>(state.range(2));
   const bool roi = state.range(3) != 0;
+  const unsigned int decimation = static_cast<unsigned int>(state.range(4));
   const Frames &f = frames(width, height);
   vpSSLDetector detector;
   detector.setNbThreads(threads);
+  detector.setDecimation(decimation);
   if (roi) {
     detector.setRegionsOfInterest(f.rois);
   }
@@ -121,7 +124,7 @@ void BM_SSL(benchmark::State &state)
     return;
   }
   const std::string row = std::string("SSL ") + (roi ? "3 ROIs 100x100 " : "full frame ") + sizeName(width, height) +
-                          (threads == 1 ? " 1 thread" : " all threads");
+                          (threads == 1 ? " 1 thread" : " all threads") + (decimation == 2 ? ", decimation 2" : "");
   vpSSLDetectorTimes sum;
   long n = 0;
   timeLoop(state, row, [&] {
@@ -185,10 +188,13 @@ void BM_AprilTagImage(benchmark::State &state)
   vpImage<unsigned char> I;
   vpImageIo::read(I, std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/AprilTag.pgm");
   const std::string size = sizeName(static_cast<int>(I.getWidth()), static_cast<int>(I.getHeight()));
-  if (state.range(0) == 0) {
+  if (state.range(0) <= 0) {
     vpSSLDetector detector;
     detector.setNbThreads(1);
-    timeLoop(state, "SSL full frame " + size + " 1 thread, AprilTag.pgm", [&] { detector.detect(I); });
+    detector.setDecimation(state.range(0) == 0 ? 1 : 2);
+    timeLoop(state,
+             "SSL full frame " + size + " 1 thread, AprilTag.pgm" + (state.range(0) == 0 ? "" : ", decimation 2"),
+             [&] { detector.detect(I); });
     return;
   }
   vpDetectorAprilTag detector(vpDetectorAprilTag::TAG_36h11);
@@ -227,11 +233,15 @@ void sslArgs(benchmark::internal::Benchmark *b)
 {
   for (const auto &s : kSizes) {
     for (int threads : {1, 0}) {
-      b->Args({s[0], s[1], threads, 0});
+      b->Args({s[0], s[1], threads, 0, 1});
     }
   }
-  b->Args({640, 480, 1, 1});
-  b->Args({640, 480, 0, 1});
+  b->Args({640, 480, 1, 1, 1});
+  b->Args({640, 480, 0, 1, 1});
+  // The decimated matching pass (setDecimation(2)), like AprilTag's quad decimate.
+  b->Args({640, 480, 1, 0, 2});
+  b->Args({640, 480, 0, 0, 2});
+  b->Args({640, 480, 1, 1, 2});
 }
 void aprilTagArgs(benchmark::internal::Benchmark *b)
 {
@@ -251,7 +261,7 @@ void sizeArgs(benchmark::internal::Benchmark *b)
 BENCHMARK(BM_SSL)->Apply(sslArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ReferenceMatching)->Args({640, 480})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AprilTag)->Apply(aprilTagArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_AprilTagImage)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AprilTagImage)->Arg(-1)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ArUco)->Apply(sizeArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 double median(std::vector<double> v)
@@ -266,10 +276,10 @@ double median(std::vector<double> v)
 // The paper's Table 1 (frames per second), where it has the same case.
 std::string paperFps(const std::string &row)
 {
-  if (row == "SSL full frame 640x480 1 thread") {
+  if (row.rfind("SSL full frame 640x480 1 thread", 0) == 0 && row.find("AprilTag.pgm") == std::string::npos) {
     return "2.1 (P-M) / 2.8 (P-IV)";
   }
-  if (row == "SSL full frame 320x240 1 thread") {
+  if (row.rfind("SSL full frame 320x240 1 thread", 0) == 0) {
     return "8.9 (P-M) / 11.1 (P-IV)";
   }
   if (row.rfind("SSL 3 ROIs 100x100 640x480", 0) == 0) {
@@ -303,6 +313,17 @@ void printTable()
     }
     std::printf("| %-44s | %9.3f | %8.1f | %12s | %-24s |\n", entry.first.c_str(), ms, ms > 0. ? 1000. / ms : 0.,
                 ratio.c_str(), paperFps(entry.first).c_str());
+  }
+  const auto full = samples().find("SSL full frame 640x480 1 thread");
+  const auto roi = samples().find("SSL 3 ROIs 100x100 640x480 1 thread");
+  if (full != samples().end() && roi != samples().end() && median(roi->second) > 0.) {
+    std::printf("\nTracking mode (3 ROIs) speed-up over the full frame, 640x480, 1 thread: %.1fx\n",
+                median(full->second) / median(roi->second));
+  }
+  const auto full2 = samples().find("SSL full frame 640x480 1 thread, decimation 2");
+  const auto roi2 = samples().find("SSL 3 ROIs 100x100 640x480 1 thread, decimation 2");
+  if (full2 != samples().end() && roi2 != samples().end() && median(roi2->second) > 0.) {
+    std::printf("The same with decimation 2: %.1fx\n", median(full2->second) / median(roi2->second));
   }
   std::printf("\nSSL stages (mean ms): normalisation, matching, peaks, radius (ring reading), identification\n");
   for (const auto &entry : stageTimes()) {

@@ -32,10 +32,44 @@ void vpSSLBrightnessNormalizer::apply(const vpImage<unsigned char> &I, vpImage<u
   if (n == 0) {
     return;
   }
-  unsigned int hist[256] = {0};
+  unsigned char lut[256];
+  computeLut(I, lut, 1);
   const unsigned char *src = I.bitmap;
+  unsigned char *dst = O.bitmap;
   for (size_t i = 0; i < n; ++i) {
-    ++hist[src[i]];
+    dst[i] = lut[src[i]];
+  }
+}
+
+void vpSSLBrightnessNormalizer::computeLut(const vpImage<unsigned char> &I, unsigned char lut[256],
+                                           unsigned int step) const
+{
+  if (step == 0) {
+    throw vpException(vpException::badValue, "vpSSLBrightnessNormalizer::computeLut: step must be >= 1");
+  }
+  // Four interleaved histograms: consecutive equal pixels (flat areas) would otherwise serialise on one counter.
+  unsigned int hist4[4][256] = {{0}};
+  const unsigned int W = I.getWidth(), H = I.getHeight();
+  for (unsigned int v = 0; v < H; v += step) {
+    const unsigned char *row = I[v];
+    unsigned int u = 0;
+    if (step == 1) {
+      for (; u + 4 <= W; u += 4) {
+        ++hist4[0][row[u]];
+        ++hist4[1][row[u + 1]];
+        ++hist4[2][row[u + 2]];
+        ++hist4[3][row[u + 3]];
+      }
+    }
+    for (unsigned int k = 0; u < W; u += step, ++k) {
+      ++hist4[k & 3][row[u]];
+    }
+  }
+  unsigned int hist[256];
+  size_t n = 0;
+  for (int g = 0; g < 256; ++g) {
+    hist[g] = hist4[0][g] + hist4[1][g] + hist4[2][g] + hist4[3][g];
+    n += hist[g];
   }
   const double nLow = m_low * 0.01 * static_cast<double>(n), nHigh = m_high * 0.01 * static_cast<double>(n);
   int lo = 0, hi = 255;
@@ -59,13 +93,8 @@ void vpSSLBrightnessNormalizer::apply(const vpImage<unsigned char> &I, vpImage<u
     gain = m_maxGain;
     offset = 0.5 * (lo + hi) - 127.5 / gain;
   }
-  unsigned char lut[256];
   for (int g = 0; g < 256; ++g) {
     const double value = std::round((g - offset) * gain);
     lut[g] = static_cast<unsigned char>(std::min(255., std::max(0., value)));
-  }
-  unsigned char *dst = O.bitmap;
-  for (size_t i = 0; i < n; ++i) {
-    dst[i] = lut[src[i]];
   }
 }

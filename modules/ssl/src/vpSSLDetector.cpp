@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPixelMeterConversion.h>
@@ -36,6 +37,44 @@ void upsample2(const vpImage<unsigned char> &I, vpImage<unsigned char> &O)
   }
 }
 
+/*
+  Rows [v0, v1) and columns [u0, u1) of the image decimated twice (2x2 box average, rounded), through the
+  normalisation table: O(v, u) = lut[mean of I(2v .. 2v + 1, 2u .. 2u + 1)]. O must be W / 2 x H / 2.
+*/
+void decimate2(const vpImage<unsigned char> &I, const unsigned char *lut, int u0, int v0, int u1, int v1,
+               vpImage<unsigned char> &O)
+{
+  for (int v = v0; v < v1; ++v) {
+    const unsigned char *a = I[2 * v], *b = I[2 * v + 1];
+    unsigned char *out = O[v];
+    // Two passes over the row (in L1): the averages vectorise, the table look-up does not.
+    for (int u = u0; u < u1; ++u) {
+      out[u] = static_cast<unsigned char>((a[2 * u] + a[2 * u + 1] + b[2 * u] + b[2 * u + 1] + 2) >> 2);
+    }
+    if (lut != nullptr) {
+      for (int u = u0; u < u1; ++u) {
+        out[u] = lut[out[u]];
+      }
+    }
+  }
+}
+
+/*
+  Window of the decimated matching pass for a full-resolution window w: 0.35 w (14 for w = 40) rather than w / 2.
+  Decimation blurs the rings (a 2x2 box), and the peak of a landmark not much larger than the window sits a few
+  pixels off its centre (the map is flat there): with w / 2 the smallest landmarks w = 40 finds at full
+  resolution (20-25 px) gave no peak, or one too far off for the ring reading. 0.35 w finds all of those on the
+  rendered views and the recorded underwater sequences (test_detector_decimation, test_tracker_sequences).
+*/
+unsigned int coarseWindow(unsigned int w)
+{
+  return std::max(2u, (7 * w + 10) / 20);
+}
+
+// Sampling step of the normalisation histogram in decimated mode: one pixel in 16 (19200 at 640x480, plenty
+// for the 1 % and 99 % percentiles).
+const unsigned int kHistogramStep = 4;
+
 double elapsedMs(std::chrono::steady_clock::time_point &t)
 {
   const auto now = std::chrono::steady_clock::now();
@@ -47,8 +86,9 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 
 vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
     : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
-      m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_maxRadius(300.), m_threshold(0.12),
-      m_rois(), m_noRois(), m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
+      m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
+      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_threshold(0.12), m_rois(), m_noRois(),
+      m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
 {
   m_radiusEstimator.setP(target.getP());
 }
@@ -56,6 +96,7 @@ vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
 void vpSSLDetector::setWindow(unsigned int w)
 {
   m_match.setWindow(w);
+  m_matchCoarse.setWindow(coarseWindow(w));
   m_window = w;
   if (m_upsample) {
     m_match.setWindow(kSmallModeWindow);
@@ -66,6 +107,14 @@ void vpSSLDetector::setSmallLandmarkMode(bool enable)
 {
   m_upsample = enable;
   m_match.setWindow(enable ? kSmallModeWindow : m_window);
+}
+
+void vpSSLDetector::setDecimation(unsigned int decimation)
+{
+  if (decimation != 1 && decimation != 2) {
+    throw vpException(vpException::badValue, "vpSSLDetector: decimation %u not 1 or 2", decimation);
+  }
+  m_decimation = decimation;
 }
 
 void vpSSLDetector::setRegionsOfInterest(const std::vector<vpRect> &rois)
@@ -124,37 +173,104 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   }
   const std::vector<vpRect> *rois = m_lastSearchWasFull ? &m_noRois : &m_rois;
   const double scale = m_upsample ? 2. : 1.;
-  if (m_upsample) {
-    upsample2(I, m_upsampled);
-    raw = &m_upsampled;
-    m_scaledRois.clear();
-    for (const vpRect &r : *rois) {
-      m_scaledRois.push_back(
-          vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
-    }
-    rois = &m_scaledRois;
-  }
+  // Decimated matching (setDecimation()): candidates from the half-resolution map, rings read at full
+  // resolution. The normalisation table comes from a sparse histogram of the whole image, so that a region
+  // of interest is normalised exactly as in a full-frame search, and only the pixels matched are decimated.
+  const bool coarse = m_decimation == 2 && !m_upsample && I.getWidth() >= 2 && I.getHeight() >= 2;
   const vpImage<unsigned char> *In = raw;
-  if (m_normalize) {
-    m_normalizer.apply(*raw, m_normalized);
-    In = &m_normalized;
-  }
-  m_times.normalization = elapsedMs(t);
-
-  if (rois->empty()) {
-    m_match.compute(*In, m_map);
+  int maxValue = 0;
+  if (coarse) {
+    const unsigned char *lut = nullptr;
+    if (m_normalize) {
+      m_normalizer.computeLut(I, m_lut, kHistogramStep);
+      lut = m_lut;
+    } else {
+      for (int g = 0; g < 256; ++g) {
+        m_lut[g] = static_cast<unsigned char>(g);
+      }
+    }
+    const int Wc = static_cast<int>(I.getWidth() / 2), Hc = static_cast<int>(I.getHeight() / 2);
+    m_decimated.resize(static_cast<unsigned int>(Hc), static_cast<unsigned int>(Wc));
+    const int wc = static_cast<int>(m_matchCoarse.getWindow());
+    m_scaledRois.clear();
+    if (rois->empty()) {
+      decimate2(I, lut, 0, 0, Wc, Hc, m_decimated);
+    } else {
+      // Pixel j of the decimated image is centred on pixel 2 j + 0.5 of the image.
+      for (const vpRect &r : *rois) {
+        const vpRect c(0.5 * (r.getLeft() - 0.5), 0.5 * (r.getTop() - 0.5), 0.5 * r.getWidth(), 0.5 * r.getHeight());
+        m_scaledRois.push_back(c);
+        // The matching of a region reads w around it.
+        const double u0 = std::max(0., std::floor(c.getLeft()) - wc - 1),
+                     v0 = std::max(0., std::floor(c.getTop()) - wc - 1);
+        const double u1 = std::min<double>(Wc, std::ceil(c.getRight()) + wc + 2);
+        const double v1 = std::min<double>(Hc, std::ceil(c.getBottom()) + wc + 2);
+        if (std::isfinite(u0) && std::isfinite(v0) && std::isfinite(u1) && std::isfinite(v1) && u0 < u1 && v0 < v1) {
+          decimate2(I, lut, static_cast<int>(u0), static_cast<int>(v0), static_cast<int>(u1), static_cast<int>(v1),
+                    m_decimated);
+        }
+      }
+      rois = &m_scaledRois;
+    }
+    m_times.normalization = elapsedMs(t);
+    if (rois->empty()) {
+      m_matchCoarse.compute(m_decimated, m_map);
+    } else {
+      m_matchCoarse.compute(m_decimated, *rois, m_map);
+    }
+    m_times.matching = elapsedMs(t);
+    maxValue = m_matchCoarse.getMaxValue();
+    m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
+    m_peakDetector.detect(m_map, m_peaks, *rois);
+    for (vpSSLPeak &p : m_peaks) {
+      p.u = 2. * p.u + 0.5;
+      p.v = 2. * p.v + 0.5;
+    }
+    m_times.peaks = elapsedMs(t);
   } else {
-    m_match.compute(*In, *rois, m_map);
-  }
-  m_times.matching = elapsedMs(t);
+    if (m_upsample) {
+      upsample2(I, m_upsampled);
+      raw = &m_upsampled;
+      m_scaledRois.clear();
+      for (const vpRect &r : *rois) {
+        m_scaledRois.push_back(
+            vpRect(2. * r.getLeft() + 0.5, 2. * r.getTop() + 0.5, 2. * r.getWidth(), 2. * r.getHeight()));
+      }
+      rois = &m_scaledRois;
+    }
+    In = raw;
+    if (m_normalize) {
+      m_normalizer.apply(*raw, m_normalized);
+      In = &m_normalized;
+    }
+    m_times.normalization = elapsedMs(t);
 
-  const int maxValue = m_match.getMaxValue();
-  m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
-  m_peakDetector.detect(m_map, m_peaks, *rois);
-  m_times.peaks = elapsedMs(t);
+    if (rois->empty()) {
+      m_match.compute(*In, m_map);
+    } else {
+      m_match.compute(*In, *rois, m_map);
+    }
+    m_times.matching = elapsedMs(t);
+
+    maxValue = m_match.getMaxValue();
+    m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
+    m_peakDetector.detect(m_map, m_peaks, *rois);
+    m_times.peaks = elapsedMs(t);
+  }
 
   m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
   m_radiusEstimator.setPixelScale(scale);
+  if (coarse) {
+    const unsigned int w = m_match.getWindow();
+    for (unsigned int xi = 0; xi <= w; ++xi) {
+      m_offsetA[xi] = m_match.offsetSqrtP(xi);
+      m_offsetB[xi] = m_match.offsetP(xi);
+    }
+    m_refined.clear();
+  }
+  if (!m_lastSearchWasFull) {
+    m_roiFilled.assign(m_rois.size(), 0);
+  }
   // The white paper just outside the outermost black ring continues the pattern by one ring (out to
   // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
   const double margin = 1. / std::sqrt(getTarget().getP());
@@ -176,6 +292,17 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
         break;
       }
     }
+    // Tracking mode (paper Sec. 4.1): a region of interest is placed around one predicted landmark. Once a
+    // landmark has been read inside every region that holds this peak, the peak is on the paper or the rings
+    // around it (most of the peaks left in a region are): it is not read. A landmark the regions did not
+    // predict is found by the next full search.
+    if (!inside && !m_lastSearchWasFull) {
+      bool open = false;
+      for (size_t k = 0; k < m_rois.size() && !open; ++k) {
+        open = !m_roiFilled[k] && m_rois[k].isInside(vpImagePoint(pv, pu));
+      }
+      inside = !open;
+    }
     if (inside) {
       continue;
     }
@@ -183,12 +310,78 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     l.u = peak.u;
     l.v = peak.v;
     l.score = std::min(1., static_cast<double>(peak.value) / maxValue);
-    if (!m_radiusEstimator.estimate(*raw, l)) {
-      continue;
+    // Tracking mode (paper Sec. 4.1): a landmark read in the previous frame near this peak is re-read around
+    // its previous ellipse, which skips the search over the whole radius range.
+    const vpSSLLandmark *prior = nullptr;
+    if (!m_lastSearchWasFull) {
+      double bestDistance = 0.;
+      for (const vpSSLLandmark &k : m_previous) {
+        const double d = std::hypot(k.u - pu, k.v - pv);
+        if (d < 0.5 * k.minorRadius && (prior == nullptr || d < bestDistance)) {
+          prior = &k;
+          bestDistance = d;
+        }
+      }
     }
-    l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, static_cast<int>(std::lround(l.u)),
-                                              static_cast<int>(std::lround(l.v)),
-                                              static_cast<unsigned int>(1.5 * scale * m_maxRadius), m_sweep);
+    bool read = false;
+    if (prior != nullptr) {
+      vpSSLLandmark scaled = *prior;
+      if (m_upsample) {
+        scaled.u = 2. * scaled.u + 0.5;
+        scaled.v = 2. * scaled.v + 0.5;
+        scaled.radius *= 2.;
+        scaled.minorRadius *= 2.;
+      }
+      // The symmetry centring of the re-reading absorbs the few pixels a plain climb may stop short of the
+      // best maximum: no grid search for it.
+      vpSSLLandmark tracked = l;
+      vpSSLPeak fine = peak;
+      if (!coarse || refinePeak(I, fine, false)) {
+        if (coarse) {
+          tracked.u = fine.u;
+          tracked.v = fine.v;
+          tracked.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
+        }
+        read = m_radiusEstimator.estimate(*raw, tracked, scaled);
+        if (read) {
+          l = tracked;
+        }
+      }
+    }
+    if (!read) {
+      if (coarse) {
+        // The decimated peak only says where to look: the full-resolution maximum nearby is the one the
+        // full-resolution pass would have found, and the ring reading starts from it.
+        vpSSLPeak fine = peak;
+        if (!refinePeak(I, fine, true)) {
+          continue;
+        }
+        l.u = fine.u;
+        l.v = fine.v;
+        l.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
+      }
+      if (!m_radiusEstimator.estimate(*raw, l)) {
+        continue;
+      }
+    }
+    const int su = static_cast<int>(std::lround(l.u)), sv = static_cast<int>(std::lround(l.v));
+    const unsigned int maxWindow = static_cast<unsigned int>(1.5 * scale * m_maxRadius);
+    if (coarse) {
+      // The sweep runs along +x on the normalised row of the centre: only that row is normalised.
+      const int W = static_cast<int>(I.getWidth());
+      m_sweepRow.resize(1, I.getWidth());
+      if (sv >= 0 && sv < static_cast<int>(I.getHeight())) {
+        const unsigned char *src = I[sv];
+        unsigned char *dst = m_sweepRow[0];
+        for (int u = std::max(0, su); u < W; ++u) {
+          dst[u] = m_lut[src[u]];
+        }
+      }
+      l.radiusEq7 = vpSSLRadiusEstimator::sweep(
+          m_sweepRow, m_match, su, sv >= 0 && sv < static_cast<int>(I.getHeight()) ? 0 : -1, maxWindow, m_sweep);
+    } else {
+      l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, su, sv, maxWindow, m_sweep);
+    }
     if (m_upsample) {
       l.u = 0.5 * (l.u + 0.5) - 0.5;
       l.v = 0.5 * (l.v + 0.5) - 0.5;
@@ -211,6 +404,23 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       continue;
     }
     m_landmarks.push_back(l);
+    if (!m_lastSearchWasFull) {
+      // Regions may overlap (landmarks close together in the image): the landmark fills the region it was
+      // predicted in, the one whose centre is nearest.
+      size_t filled = m_rois.size();
+      double nearestDistance = 0.;
+      for (size_t k = 0; k < m_rois.size(); ++k) {
+        const vpRect &r = m_rois[k];
+        const double d = std::hypot(r.getLeft() + 0.5 * r.getWidth() - l.u, r.getTop() + 0.5 * r.getHeight() - l.v);
+        if (r.isInside(vpImagePoint(l.v, l.u)) && (filled == m_rois.size() || d < nearestDistance)) {
+          filled = k;
+          nearestDistance = d;
+        }
+      }
+      if (filled < m_rois.size()) {
+        m_roiFilled[filled] = 1;
+      }
+    }
   }
   // Stable insertion sort, best score first: a handful of landmarks, and std::stable_sort would allocate
   // a buffer every frame.
@@ -220,6 +430,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
   }
   m_times.radius = elapsedMs(t);
+  // Storage reused: no allocation once it has grown to the number of landmarks in view.
+  m_previous.assign(m_landmarks.begin(), m_landmarks.end());
 
   m_identifier.identify(m_landmarks, m_targetMatch);
   m_times.identification = elapsedMs(t);
@@ -227,6 +439,119 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   fillObjects();
   m_times.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return !m_landmarks.empty();
+}
+
+int vpSSLDetector::fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const
+{
+  // Eq. 5 at one pixel on the normalised image (through the table), exactly as the full-resolution map.
+  const int w = static_cast<int>(m_match.getWindow());
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  const std::ptrdiff_t steps[4] = {1, -1, static_cast<std::ptrdiff_t>(W), -static_cast<std::ptrdiff_t>(W)};
+  const bool valid[4] = {u + w < W, u >= w, v + w < H, v >= w};
+  const unsigned char *p = I.bitmap + static_cast<std::ptrdiff_t>(v) * W + u;
+  bool any = false;
+  int best = 0;
+  for (int d = 0; d < 4; ++d) {
+    if (!valid[d]) {
+      continue;
+    }
+    const std::ptrdiff_t step = steps[d];
+    int sum = 0;
+    for (int xi = 1; xi <= w; ++xi) {
+      const int c = m_lut[p[xi * step]], a = m_lut[p[m_offsetA[xi] * step]], b = m_lut[p[m_offsetB[xi] * step]];
+      sum += std::abs(c - a) - std::abs(c - b);
+    }
+    best = any ? std::max(best, sum) : sum;
+    any = true;
+  }
+  return best;
+}
+
+bool vpSSLDetector::refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid)
+{
+  // Hill climbing on the full-resolution map from the decimated peak, each value computed once.
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  const int kReach = 8, kSize = 2 * kReach + 1;
+  int cache[kSize * kSize];
+  std::fill(cache, cache + kSize * kSize, std::numeric_limits<int>::min());
+  const int u0 = std::min(W - 1, std::max(0, static_cast<int>(std::lround(peak.u))));
+  const int v0 = std::min(H - 1, std::max(0, static_cast<int>(std::lround(peak.v))));
+  auto M = [&](int u, int v) {
+    int &m = cache[(v - v0 + kReach) * kSize + (u - u0 + kReach)];
+    if (m == std::numeric_limits<int>::min()) {
+      m = fullResolutionMatch(I, u, v);
+    }
+    return m;
+  };
+  // The full-resolution map is bumpy near a landmark's centre (Eq. 5 takes the best of four directions):
+  // climbing from the decimated peak alone can stop on a secondary maximum a few pixels off, from which the
+  // ring reading does not find the centre. A 2-pixel grid over the decimated peak's uncertainty first.
+  int u = u0, v = v0, best = std::numeric_limits<int>::min();
+  for (int dv = -4; dv <= 4 && grid; dv += 2) {
+    for (int du = -4; du <= 4; du += 2) {
+      const int gu = u0 + du, gv = v0 + dv;
+      if (gu >= 0 && gv >= 0 && gu < W && gv < H && M(gu, gv) > best) {
+        best = M(gu, gv);
+        u = gu;
+        v = gv;
+      }
+    }
+  }
+  for (;;) {
+    const int m = M(u, v);
+    int bu = u, bv = v, bm = m;
+    for (int dv = -1; dv <= 1; ++dv) {
+      for (int du = -1; du <= 1; ++du) {
+        const int nu = u + du, nv = v + dv;
+        if ((du == 0 && dv == 0) || nu < 0 || nv < 0 || nu >= W || nv >= H) {
+          continue;
+        }
+        const int n = M(nu, nv);
+        // As the peak detector: one pixel per plateau, the last in row-major order.
+        const bool later = dv > 0 || (dv == 0 && du > 0);
+        if (later ? n >= bm : n > bm) {
+          bm = n;
+          bu = nu;
+          bv = nv;
+        }
+      }
+    }
+    if (bu == u && bv == v) {
+      break;
+    }
+    u = bu;
+    v = bv;
+    if (std::abs(u - u0) >= kReach || std::abs(v - v0) >= kReach) {
+      return false; // no maximum near the decimated peak
+    }
+  }
+  const int m = M(u, v);
+  if (m < std::max(1, static_cast<int>(std::ceil(m_threshold * m_match.getMaxValue())))) {
+    return false;
+  }
+  // The same full-resolution maximum reached from another decimated peak has been read already.
+  if (grid) {
+    for (const vpImagePoint &r : m_refined) {
+      if (r.get_u() == u && r.get_v() == v) {
+        return false;
+      }
+    }
+    m_refined.push_back(vpImagePoint(v, u));
+  }
+  auto parabola = [](double a, double b, double c) {
+    const double den = a - 2. * b + c;
+    return den >= 0. ? 0. : std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den));
+  };
+  peak.u = u;
+  peak.v = v;
+  peak.value = m;
+  if (u > 0 && u < W - 1) {
+    peak.u += parabola(M(u - 1, v), m, M(u + 1, v));
+  }
+  if (v > 0 && v < H - 1) {
+    peak.v += parabola(M(u, v - 1), m, M(u, v + 1));
+  }
+  return true;
 }
 
 void vpSSLDetector::fillObjects()

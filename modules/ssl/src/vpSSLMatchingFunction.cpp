@@ -74,12 +74,15 @@ void vpSSLMatchingFunction::cumulative(const vpImage<unsigned char> &I, int u, i
     return;
   }
   int sum = 0;
+  // offsetSqrtP() and offsetP() with the square root taken once (the same arithmetic): the Eq. 7 sweep of
+  // every landmark runs hundreds of terms.
+  const double q = std::sqrt(m_p);
   for (unsigned int xi = 1; xi <= maxWindow; ++xi) {
     const int ue = u + du * static_cast<int>(xi), ve = v + dv * static_cast<int>(xi);
     if (ue < 0 || ve < 0 || ue >= W || ve >= H) {
       break;
     }
-    const int a = offsetSqrtP(xi), b = offsetP(xi);
+    const int a = static_cast<int>(std::floor(q * xi + 0.5)), b = static_cast<int>(std::floor(m_p * xi + 0.5));
     const int i0 = I[ve][ue];
     const int ia = I[v + dv * a][u + du * a];
     const int ib = I[v + dv * b][u + du * b];

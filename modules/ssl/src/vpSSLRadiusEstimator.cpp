@@ -33,6 +33,16 @@ const double kLevelShare = 0.7;
 // Alternating ring pairs a ray must show, blur permitting (fewer only when fewer rings are resolvable).
 const int kMinAlternations = 3;
 
+// Directions around the ellipse at which ringsAllAround() reads the two outer rings.
+const int kAroundSamples = 32;
+// Share of those samples that must be on their ring's side of the mid level (occlusion and glare allowed for).
+const double kAroundShare = 0.78;
+
+// Half-width (in p-levels) of the radius window of a tracked re-reading: 0.15 level is 11 % either way for
+// p = 0.5, more than the apparent radius changes between frames; a landmark that changed more is read again
+// from scratch (vpSSLDetector falls back to estimate()).
+const double kTrackedWindow = 0.15;
+
 // Largest relative distance of a ray's edge point from the fitted ellipse.
 const double kMaxEllipseResidual = 0.08;
 
@@ -168,12 +178,21 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   double contrast[64], level[65];
   int nb = 0;
   double previous = 0., outerEdge = radius, cmax = 0.;
+  // Each ring's outer edge is the previous one's inner edge: its integral is carried over.
+  double outerIntegral = integral(outerEdge);
+  // Clearly resolvable pairs at this radius, before the cap by the pairs read (nbExpected below).
+  int clearPairs = 0;
+  for (double r = radius * q; clearPairs < 64 && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
+    ++clearPairs;
+  }
   for (int k = 0; nb < 64; ++k) {
     const double innerEdge = outerEdge * q;
     if (outerEdge - innerEdge < kMinRingWidth * m_pixelScale || innerEdge < kMinRingRadius * m_pixelScale) {
       break;
     }
-    const double mean = (integral(outerEdge) - integral(innerEdge)) / (outerEdge - innerEdge);
+    const double innerIntegral = integral(innerEdge);
+    const double mean = (outerIntegral - innerIntegral) / (outerEdge - innerEdge);
+    outerIntegral = innerIntegral;
     level[k] = mean;
     if (k > 0) {
       contrast[nb] = ((k - 1) % 2 == 0) ? mean - previous : previous - mean;
@@ -182,6 +201,17 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       // rayCandidates() needs the outermost pair's contrast at 0.6 kMinPairContrast (3.6) or more: below
       // 3.5 (a margin for rounding) nothing else need be read.
       if (nb == 1 && contrast[0] < 3.5) {
+        nbPairsOut = 0;
+        outerContrast = contrast[0];
+        nbExpected = 0;
+        return -1e30;
+      }
+      // The pairs are counted inwards while their contrast is at least 0.25 cmax, and cmax only grows: a
+      // weaker pair ends the count here, below the alternations rayCandidates() needs (at least
+      // max(2, min(nbExpected - 1, kMinAlternations)), nbExpected >= min(clearPairs, nb)). Clutter mostly
+      // ends here, after a few rings instead of all of them; the result is the same.
+      const int needed = std::max(2, std::min(std::min(clearPairs, nb) - 1, kMinAlternations));
+      if (nb - 1 < needed && contrast[nb - 1] < 0.25 * cmax) {
         nbPairsOut = 0;
         outerContrast = contrast[0];
         nbExpected = 0;
@@ -297,14 +327,23 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
     m_fullGridMin = m_minRadius;
     m_fullGridMax = m_maxRadius;
   }
-  for (const double r : m_fullGrid) {
+  auto first = m_fullGrid.begin();
+  if (m_levelZeroOnly && ref > 0.) {
+    // Tracked: the grid below the previous level's window is not even looked at.
+    first = std::lower_bound(m_fullGrid.begin(), m_fullGrid.end(), ref * std::exp(-(kTrackedWindow + 0.01) * logStep));
+  }
+  for (auto it = first; it != m_fullGrid.end(); ++it) {
+    const double r = *it;
     if (r > rMax) {
       break;
     }
     // Given a first reading, only the p-similar levels around it are worth a look.
     if (ref > 0.) {
       const double x = std::log(r / ref) / logStep;
-      if (std::fabs(x - std::round(x)) > 0.3) {
+      if (m_levelZeroOnly && x > kTrackedWindow) {
+        break; // tracked: the previous level only
+      }
+      if (std::fabs(x - std::round(x)) > 0.3 || (m_levelZeroOnly && x < -kTrackedWindow)) {
         continue;
       }
     }
@@ -504,10 +543,9 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
   return false;
 }
 
-bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+bool vpSSLRadiusEstimator::symmetricCentre(const vpImage<unsigned char> &I, double &u, double &v)
 {
-  double u = landmark.u, v = landmark.v, scale = 0., asymmetry = 0.;
-  m_rayImage = nullptr; // the image may have changed in place since the last call
+  double asymmetry = 0.;
   // Clutter is seldom point-symmetric: most matching peaks end here, before any ring is read. The peak
   // of a landmark smaller than the window can sit a few pixels off: follow the symmetry until it settles.
   for (int iter = 0; iter < 3; ++iter) {
@@ -519,7 +557,14 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
       break;
     }
   }
-  if (asymmetry > kMaxAsymmetry) {
+  return asymmetry <= kMaxAsymmetry;
+}
+
+bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+{
+  double u = landmark.u, v = landmark.v, scale = 0.;
+  m_rayImage = nullptr; // the image may have changed in place since the last call
+  if (!symmetricCentre(I, u, v)) {
     return false;
   }
   double R[8];
@@ -542,6 +587,41 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
       !refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok)) {
     return false;
   }
+  return finish(I, u, v, R, ok, landmark);
+}
+
+bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark,
+                                    const vpSSLLandmark &prior)
+{
+  if (!(prior.radius > 0. && prior.minorRadius > 0.)) {
+    return estimate(I, landmark);
+  }
+  double u = landmark.u, v = landmark.v;
+  m_rayImage = nullptr;
+  if (!symmetricCentre(I, u, v)) {
+    return false;
+  }
+  // The landmark was read in the previous frame: its ellipse gives each ray's level, so the first reading
+  // (the radius search over the whole range, the dearest step) is skipped, and the second one searches only
+  // around the previous radius (kTrackedWindow: about a tenth either way).
+  const double c = std::cos(prior.theta), s = std::sin(prior.theta);
+  double ref[8], R[8];
+  bool ok[8];
+  for (int d = 0; d < 8; ++d) {
+    const double x = c * kCos[d] + s * kSin[d], y = -s * kCos[d] + c * kSin[d];
+    ref[d] = 1. / std::sqrt(x * x / (prior.radius * prior.radius) + y * y / (prior.minorRadius * prior.minorRadius));
+  }
+  double scale = 0.5 * (prior.radius + prior.minorRadius);
+  m_levelZeroOnly = true;
+  const bool read = readRays(I, u, v, m_maxRadius) && selectRadii(ref, R, ok, scale) &&
+                    refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok);
+  m_levelZeroOnly = false;
+  return read && finish(I, u, v, R, ok, landmark);
+}
+
+bool vpSSLRadiusEstimator::finish(const vpImage<unsigned char> &I, double u, double v, double R[8], bool ok[8],
+                                  vpSSLLandmark &landmark)
+{
   // The rays' edge points lie on one ellipse centred on the landmark; a ray that strays from it read
   // something else (occluder, clutter) and is dropped, and a candidate without a consistent ellipse is no
   // landmark.
@@ -563,6 +643,9 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
     }
     ok[e.worstRay] = false;
   }
+  if (!ringsAllAround(I, u, v, e)) {
+    return false;
+  }
   for (int d = 0; d < 8; ++d) {
     landmark.directionalRadius[d] = ok[d] ? R[d] : 0.;
   }
@@ -572,6 +655,41 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
   landmark.minorRadius = e.minor;
   landmark.theta = e.theta;
   return true;
+}
+
+bool vpSSLRadiusEstimator::ringsAllAround(const vpImage<unsigned char> &I, double u, double v, const Ellipse &e) const
+{
+  // The eight rays see eight lines through the candidate: a chessboard or a periodic texture can show a
+  // ring sequence along each of them. Printed rings are closed: all around the ellipse, the middle of the
+  // outermost (black) ring must be darker than the middle of the next (white) one.
+  const double q = std::sqrt(m_p);
+  const double sBlack = 0.5 * (1. + q), sWhite = 0.5 * (q + m_p);
+  const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
+  float black[kAroundSamples], white[kAroundSamples];
+  int n = 0;
+  double sumBlack = 0., sumWhite = 0.;
+  for (int k = 0; k < kAroundSamples; ++k) {
+    const double angle = 2. * M_PI * k / kAroundSamples, x = std::cos(angle), y = std::sin(angle);
+    const double r = e.radiusAlong(x, y);
+    const double ub = u + sBlack * r * x, vb = v + sBlack * r * y, uw = u + sWhite * r * x, vw = v + sWhite * r * y;
+    if (!(ub >= 0. && vb >= 0. && ub <= W && vb <= H)) {
+      continue; // outside the image: not seen, neither for nor against
+    }
+    black[n] = bilinear(I, ub, vb);
+    white[n] = bilinear(I, uw, vw);
+    sumBlack += black[n];
+    sumWhite += white[n];
+    ++n;
+  }
+  if (n < kAroundSamples / 2) {
+    return true; // too little of the landmark in view to judge: the rays decided
+  }
+  const double mid = 0.5 * (sumBlack + sumWhite) / n;
+  int right = 0;
+  for (int k = 0; k < n; ++k) {
+    right += (black[k] < mid ? 1 : 0) + (white[k] > mid ? 1 : 0);
+  }
+  return right >= kAroundShare * 2 * n;
 }
 
 unsigned int vpSSLRadiusEstimator::sweep(const vpImage<unsigned char> &I, const vpSSLMatchingFunction &match, int u,

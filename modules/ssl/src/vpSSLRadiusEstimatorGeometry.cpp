@@ -240,6 +240,24 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
     asymmetry = 0.;
     return false; // too close to the border to compare both halves: keep the peak
   }
+  // Variance of the disc about pixel (pu, pv); n receives its number of pixels.
+  auto discVariance = [&](int pu, int pv, double &sumOut, int &n) {
+    double sum = 0., sum2 = 0.;
+    n = 0;
+    for (int dy = -radius; dy <= radius; ++dy) {
+      const unsigned char *row = I[pv + dy];
+      for (int dx = -radius; dx <= radius; ++dx) {
+        if (dx * dx + dy * dy <= radius * radius) {
+          const double g = row[pu + dx];
+          sum += g;
+          sum2 += g * g;
+          ++n;
+        }
+      }
+    }
+    sumOut = sum;
+    return sum2 / n - (sum / n) * (sum / n);
+  };
   // Pixels p and q with p + q = 2 c, c = (su, sv) / 2: p = (su >> 1, sv >> 1) + (dx, dy) and
   // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once.
   if (m_symmetryRadius != radius || m_symmetryWidth != W) {
@@ -311,20 +329,9 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
   u = 0.5 * (cu + bi + du);
   v = 0.5 * (cv + bj + dv);
   // Residual relative to the disc's own contrast: 0 for a perfectly symmetric pattern, about 1 for clutter.
-  double sum = 0., sum2 = 0.;
+  double sum = 0.;
   int n = 0;
-  const int pu = (cu + bi) >> 1, pv = (cv + bj) >> 1;
-  for (int dy = -radius; dy <= radius; ++dy) {
-    for (int dx = -radius; dx <= radius; ++dx) {
-      if (dx * dx + dy * dy <= radius * radius) {
-        const double g = I[pv + dy][pu + dx];
-        sum += g;
-        sum2 += g * g;
-        ++n;
-      }
-    }
-  }
-  const double variance = sum2 / n - (sum / n) * (sum / n);
+  const double variance = discVariance((cu + bi) >> 1, (cv + bj) >> 1, sum, n);
   // A nearly flat disc (the innermost rings of a large landmark blurred by water and lens into a grey
   // spot) says nothing either way: its residual is sensor noise. Only a contrasted disc is judged.
   asymmetry = variance < kFlatVariance ? 0. : b / (0.5 * n * 2. * variance);

@@ -40,6 +40,17 @@ public:
   //! Normalises \e I into \e O (resized; may not alias \e I).
   void apply(const vpImage<unsigned char> &I, vpImage<unsigned char> &O) const;
 
+  /*!
+    The lookup table apply() uses, from the histogram of every \e step-th pixel of every \e step-th row
+    of \e I (step 1: every pixel, what apply() does). A sparse histogram gives nearly the same percentiles
+    for a fraction of the cost, and lets a caller normalise only the pixels it needs (regions of interest,
+    a decimated image) with the same table whatever the region.
+    \param I : grey image.
+    \param lut : output, lut[g] is the normalised level of g.
+    \param step : sampling step (>= 1). \exception vpException if 0.
+  */
+  void computeLut(const vpImage<unsigned char> &I, unsigned char lut[256], unsigned int step = 1) const;
+
 private:
   double m_low;
   double m_high;

@@ -11,6 +11,10 @@
 #include <visp3/ssl/vpSSLLandmark.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 
+namespace vpSSLRadiusEstimatorInternal {
+struct Ellipse;
+}
+
 /*!
   \class vpSSLRadiusEstimator
   \ingroup group_ssl
@@ -60,6 +64,14 @@ public:
   bool estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
 
   /*!
+    Re-reads a landmark tracked from the previous frame: as estimate(), but each ray's radius is searched
+    only within about 11 % of the previous ellipse (\e prior: its radius, minorRadius and theta), which
+    skips the search over the whole radius range. Falls back to estimate() if \e prior has no ellipse.
+    \return false if the ring pattern is not there at that size (the caller may then try estimate()).
+  */
+  bool estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark, const vpSSLLandmark &prior);
+
+  /*!
     Eq. 7 sweep: \e S[w] is the +x matching sum with window w at pixel (u, v), for w up to
     \e maxWindow (or the image border).
     \return the w maximising S (the paper's apparent size), 0 if the sweep is empty.
@@ -69,6 +81,8 @@ public:
 
 private:
   bool readRays(const vpImage<unsigned char> &I, double u, double v, double maxRadius);
+  bool symmetricCentre(const vpImage<unsigned char> &I, double &u, double &v);
+  bool finish(const vpImage<unsigned char> &I, double u, double v, double R[8], bool ok[8], vpSSLLandmark &landmark);
   struct Candidate
   {
     double radius;
@@ -83,6 +97,8 @@ private:
   double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
   bool solidRings(int d, double radius) const;
   bool ringEdge(int d, double expected, double halfWidth, double &position);
+  bool ringsAllAround(const vpImage<unsigned char> &I, double u, double v,
+                      const vpSSLRadiusEstimatorInternal::Ellipse &e) const;
 
   double m_minRadius;
   double m_maxRadius;
@@ -103,6 +119,7 @@ private:
   size_t m_raySamples[8] = {0, 0, 0, 0, 0, 0, 0, 0}; // length of each whole ray, in samples
   // Radius grid of the whole search range, built once (rayCandidates()).
   std::vector<double> m_fullGrid;
+  bool m_levelZeroOnly = false; // tracked re-reading: only the previous level is searched
   double m_fullGridMin = 0., m_fullGridMax = 0.;
   // Linear pixel offsets of the half disc compared with its half-turn (symmetryCentre()), for this radius and width.
   std::vector<int> m_symmetryOffsets;
