@@ -112,6 +112,16 @@ inline double angleError(const vpHomogeneousMatrix &est, const vpHomogeneousMatr
   return vpMath::deg(std::acos(c));
 }
 
+//! \e x with \e digits decimals for the Markdown tables, "-" when it was not measured (NaN).
+inline std::string fmt(double x, int digits)
+{
+  if (!std::isfinite(x))
+    return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
+  return buf;
+}
+
 //! The range bands of the report (m): [0,1), [1,2), [2,4), [4,8), [8,12].
 inline const std::vector<double> &bandEdges()
 {

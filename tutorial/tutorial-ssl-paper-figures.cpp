@@ -65,14 +65,7 @@ file cannot be written.
   std::exit(code);
 }
 
-std::string fmt(double x, int digits)
-{
-  if (!std::isfinite(x))
-    return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
-  return buf;
-}
+using sslbench::fmt;
 
 const unsigned int kSize = 240;      // view side (px)
 const double kFocal = 400.;          // px

@@ -81,14 +81,7 @@ double parseNumber(const std::string &opt, const std::string &v, double min)
   return x;
 }
 
-std::string fmt(double x, int digits)
-{
-  if (!std::isfinite(x))
-    return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
-  return buf;
-}
+using sslbench::fmt;
 
 std::string csvNum(double x)
 {
