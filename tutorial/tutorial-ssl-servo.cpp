@@ -245,12 +245,13 @@ int main(int argc, char **argv)
     // The renderer takes the pose of the tag frame for an AprilTag sheet; the simulator the sheet frame.
     const vpHomogeneousMatrix sMo = aprilTag ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();
 
-    vpSSLTracker tracker(vpSSLTarget::ssl3a3(), cam, auv.getCameraToVehicle());
+    const vpSSLTarget target = vpSSLTarget::ssl3a3();
+    vpSSLTracker tracker(target, cam, auv.getCameraToVehicle());
     tracker.setSeed(opt.seed);
     sslbench::AprilTagBaseline tagFinder(sheet, cam);
 
     std::vector<vpPoint> truthPoints;
-    for (const vpSSLTargetLandmark &l : vpSSLTarget::ssl3a3().getLandmarks()) {
+    for (const vpSSLTargetLandmark &l : target.getLandmarks()) {
       truthPoints.emplace_back(l.x, l.y, l.z);
     }
     std::vector<Row> rows;
