@@ -88,15 +88,6 @@ const Sequence &simulatedApproach()
   return s;
 }
 
-double median(std::vector<double> v)
-{
-  if (v.empty())
-    return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 double positionError(const vpHomogeneousMatrix &cMo, const vpPoseVector &gt)
 {
   const vpHomogeneousMatrix cMoGt(gt);
@@ -167,7 +158,7 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
                 f.hasGroundTruth ? vpHomogeneousMatrix(f.cMo).getTranslationVector().frobeniusNorm() : 0., name(state),
                 tracker.getNbLandmarks(), tracker.getLastSearchWasFull() ? 1 : 0, trackerError, singleError);
   }
-  const double trackerMedian = median(trackerErrors), singleMedian = median(singleErrors);
+  const double trackerMedian = sslt::median(trackerErrors), singleMedian = sslt::median(singleErrors);
   std::printf("median position error: tracker %.4f m (%zu frames tracking), single frame %.4f m (%zu frames), "
               "%u gate re-initialisations\n",
               trackerMedian, trackerErrors.size(), singleMedian, singleErrors.size(), tracker.getNbReinitialisations());
@@ -269,7 +260,7 @@ double trackWithOdometry(const Sequence &s, bool corrupt, unsigned int &rejected
       errors.push_back(positionError(tracker.getPose(), s.frames[i].cMo));
   }
   EXPECT_GE(errors.size(), 20u);
-  return median(errors);
+  return sslt::median(errors);
 }
 
 // Odometry that is not finite or jumps 100 m is not used, and the pose stays on the target.

@@ -48,15 +48,6 @@ Sequence readSequence(const std::string &name)
   return s;
 }
 
-double median(std::vector<double> v)
-{
-  if (v.empty())
-    return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 double positionError(const vpHomogeneousMatrix &cMo, const vpHomogeneousMatrix &truth)
 {
   return (cMo.getTranslationVector() - truth.getTranslationVector()).frobeniusNorm();
@@ -271,11 +262,11 @@ TEST(TrackerSequence, TrackerBeatsSingleFrameInCoastalWater)
   ASSERT_GE(trackerErrors.size(), 6u);
   std::printf("median position error: single frame %.4f m, tracker %.4f m; worst: single frame %.4f m, tracker "
               "%.4f m\n",
-              median(singleErrors), median(trackerErrors), singleWorst, trackerWorst);
+              sslt::median(singleErrors), sslt::median(trackerErrors), singleWorst, trackerWorst);
   ASSERT_GT(singleWorst, 0.5); // the premise: S1 alone read as B
   // Never worse in the median (it is the single-frame pose when that one agrees with the filter), and no gross
   // error where the single frame has one.
-  EXPECT_LE(median(trackerErrors), median(singleErrors) + 0.002);
+  EXPECT_LE(sslt::median(trackerErrors), sslt::median(singleErrors) + 0.002);
   EXPECT_LT(trackerWorst, 0.12); // 0.062 m measured
   EXPECT_LT(trackerWorst, 0.25 * singleWorst);
 }

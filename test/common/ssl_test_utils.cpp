@@ -241,4 +241,13 @@ bool isFinite(const vpHomogeneousMatrix &M)
   return true;
 }
 
+double median(std::vector<double> v)
+{
+  if (v.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 } // namespace sslt

@@ -9,6 +9,8 @@
 #ifndef SSL_TEST_UTILS_H
 #define SSL_TEST_UTILS_H
 
+#include <vector>
+
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
@@ -81,6 +83,9 @@ vpImagePoint darknessCentroid(const vpImage<unsigned char> &I, const vpImagePoin
 */
 vpCameraParameters cameraWithDistortion(double px, double py, double u0, double v0, double kud, unsigned int width,
                                         unsigned int height, double *maxMismatchPx = nullptr);
+
+//! Median of \e v (mean of the two middle values for an even count); NaN when \e v is empty.
+double median(std::vector<double> v);
 
 } // namespace sslt
 
