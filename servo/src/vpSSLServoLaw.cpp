@@ -96,8 +96,9 @@ void targetCentre(const vpSSLServoInput &input, double &x, double &y, double &de
 
 vpSSLServoLaw::vpSSLServoLaw()
     : m_standOff(2.), m_minDepth(0.05), m_minPointStandOff(0.3), m_vMc(forwardCameraMount(0.)), m_enabled(), m_weight(),
-      m_gain(0.8, 0.2, 15.), m_vmax(6), m_status(SSL_SERVO_NO_TARGET), m_saturated(false), m_velocity(6, 0.),
-      m_cameraVelocity(6, 0.), m_error(), m_pointError(kNaN), m_centreDepth(kNaN), m_centreX(kNaN), m_centreY(kNaN)
+      m_pseudoInverseThreshold(0.005), m_gain(0.8, 0.2, 15.), m_vmax(6), m_status(SSL_SERVO_NO_TARGET),
+      m_saturated(false), m_velocity(6, 0.), m_cameraVelocity(6, 0.), m_error(), m_pointError(kNaN),
+      m_centreDepth(kNaN), m_centreX(kNaN), m_centreY(kNaN)
 {
   for (unsigned int i = 0; i < 6; ++i) {
     m_enabled[i] = true;
@@ -105,6 +106,10 @@ vpSSLServoLaw::vpSSLServoLaw()
   }
   // Starbug (paper Sec. 5.1): thrusters drive surge, heave, roll, pitch and yaw; sway only marginally.
   m_enabled[SSL_AXIS_SWAY] = false;
+  // The hull rights its roll and pitch (centre of gravity below the centre of buoyancy): turning it about those
+  // axes costs thrust that heave and yaw do not, so the least-squares solution is told to prefer the others.
+  m_weight[SSL_AXIS_ROLL] = 0.3;
+  m_weight[SSL_AXIS_PITCH] = 0.3;
   m_vmax[SSL_AXIS_SURGE] = 0.5;
   m_vmax[SSL_AXIS_SWAY] = 0.2;
   m_vmax[SSL_AXIS_HEAVE] = 0.3;
@@ -169,6 +174,9 @@ void vpSSLServoLaw::setCameraRobot()
     m_enabled[i] = true;
     m_weight[i] = 1.;
   }
+  // A camera that follows every twist at once has no lag to turn a weak direction into a limit cycle, and it
+  // needs that direction (the facing rotation) to reach the desired pose.
+  m_pseudoInverseThreshold = 1e-6;
 }
 
 void vpSSLServoLaw::setAxisEnabled(vpSSLVehicleAxis axis, bool enabled)
@@ -196,6 +204,15 @@ double vpSSLServoLaw::getAxisWeight(vpSSLVehicleAxis axis) const
 {
   checkAxis(axis);
   return m_weight[axis];
+}
+
+void vpSSLServoLaw::setPseudoInverseThreshold(double ratio)
+{
+  if (!(ratio >= 0.) || !(ratio < 1.)) {
+    throw vpException(vpException::badValue, "vpSSLServoLaw::setPseudoInverseThreshold: ratio: %g is not in [0, 1)",
+                      ratio);
+  }
+  m_pseudoInverseThreshold = ratio;
 }
 
 void vpSSLServoLaw::setGain(double lambda)
@@ -272,7 +289,7 @@ vpMatrix vpSSLServoLaw::getVehicleJacobian() const
   unsigned int k = 0;
   for (unsigned int i = 0; i < 6; ++i) {
     if (m_enabled[i]) {
-      eJe[i][k++] = 1.;
+      eJe[i][k++] = m_weight[i];
     }
   }
   return eJe;
@@ -379,11 +396,10 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
       continue;
     }
     if (centringOnly) {
-      if (i < 3) {
-        continue; // no translation while aligning
-      }
-      // Rotations that turn the optical axis; the one about it (roll of a forward camera) cannot centre.
-      const double alongOpticalAxis = std::fabs(cMv[2][i - 3]);
+      // Translations across the optical axis and rotations that turn it; a motion along the optical axis (the
+      // surge of a forward camera, the roll about it) cannot centre. Heave is kept: a hull that rights its pitch
+      // cannot hold a target 15 deg below with pitch alone (the ALIGN stall of fig7).
+      const double alongOpticalAxis = std::fabs(cMv[2][i < 3 ? i : i - 3]);
       if (alongOpticalAxis > 0.9) {
         continue;
       }
@@ -399,7 +415,9 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
   }
   vpMatrix eJe(6, static_cast<unsigned int>(axes.size()), 0.);
   for (size_t k = 0; k < axes.size(); ++k) {
-    eJe[axes[k]][static_cast<unsigned int>(k)] = 1.;
+    // Weighted minimum norm: v = W qdot with qdot = -lambda (L cVe eJe W)^+ e, so that of the motions that give
+    // the same feature velocity the one using the heavier-weighted axes is chosen.
+    eJe[axes[k]][static_cast<unsigned int>(k)] = m_weight[axes[k]];
   }
 
   vpColVector qdot;
@@ -409,6 +427,10 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
     task.setServo(vpServo::EYEINHAND_L_cVe_eJe);
     task.setInteractionMatrixType(vpServo::CURRENT, vpServo::PSEUDO_INVERSE);
     task.setLambda(m_gain);
+    // For a distant target heave and pitch move the image alike (v_y = Z w_x), so L cVe eJe has a singular
+    // value ~1e-4 of the largest; inverted, it turned a small inconsistency of the docking error into a
+    // heave-pitch command at the limits (the vehicle dived under the board in fig9). Truncate it.
+    task.setPseudoInverseThreshold(m_pseudoInverseThreshold);
     task.set_cVe(vpVelocityTwistMatrix(cMv));
     task.set_eJe(eJe);
 

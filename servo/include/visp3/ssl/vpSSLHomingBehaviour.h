@@ -41,7 +41,7 @@ enum vpSSLHomingState
   - SEARCH: seen -> ALIGN. Command: yaw rate setSearchPattern() and heave tracking a depth that oscillates
     between the pattern's two depths (triangle wave), so that a target above or below is swept.
   - ALIGN: the target centre within setAlignTolerance() of the optical axis -> HOME (-> DOCK if docking was
-    requested). Command: vpSSLServoLaw::computeCentringLaw() (pitch and yaw only).
+    requested). Command: vpSSLServoLaw::computeCentringLaw() (heave, pitch and yaw; no surge).
   - HOME: docking requested (startDocking(), or setAutoDock() after holding the stand-off) -> DOCK. Command:
     vpSSLServoLaw::computeControlLaw() at the stand-off.
   - DOCK: collision -> DOCKED. Command: the servo law with stand-off 0. When the target is lost within

@@ -62,9 +62,17 @@ enum vpSSLServoStatus
     point depth otherwise), desired value 0.
 
   Under-actuation as for ViSP's mobile robots (vpServo::EYEINHAND_L_cVe_eJe): the camera twist is
-  v_c = cVe eJe qdot, with cVe from the camera mounting vMc (setCameraToVehicle()) and eJe the 6 x n selection of
-  the n enabled vehicle axes (setAxisEnabled()); the law gives qdot = -lambda (L cVe eJe)^+ e. An axis weight
-  w in (0, 1] (setAxisWeight()) scales that axis' command afterwards (a "marginal" axis: sway of the Starbug).
+  v_c = cVe eJe qdot, with cVe from the camera mounting vMc (setCameraToVehicle()) and eJe = S W, S the 6 x n
+  selection of the n enabled vehicle axes (setAxisEnabled()) and W their weights in (0, 1] (setAxisWeight());
+  the law gives qdot = -lambda (L cVe eJe)^+ e and the vehicle command W qdot. Among the motions that give the
+  same feature velocity this is the one of least weighted norm: an axis of small weight is used only where the
+  others cannot do its work. Defaults: sway disabled (marginal on the Starbug), roll and pitch weighted 0.3 (the
+  hull rights them), surge, heave and yaw 1.
+
+  Conditioning: for a distant target heave and pitch move the image almost alike (v_y = Z w_x), so the smallest
+  singular value of L cVe eJe is ~1e-4 of the largest. Inverting it turns a small inconsistency of the error (as
+  when docking) into a heave-pitch command at the limits, so singular values below setPseudoInverseThreshold()
+  (default 0.005 of the largest) are dropped.
 
   Gain: vpAdaptiveGain (setGain()), high near convergence, low for large errors. Every vehicle axis is limited
   (setVelocityLimits()); the whole vector is scaled down together so that its direction is kept.
@@ -95,9 +103,10 @@ class VISP_SSL_EXPORT vpSSLServoLaw
 {
 public:
   /*!
-    Law with the defaults: stand-off 2 m; Starbug axes (surge, heave, roll, pitch, yaw enabled, sway disabled);
-    camera mount forwardCameraMount(0); adaptive gain (0.8 at zero, 0.2 at infinity, slope 15); limits surge
-    0.5 m/s, sway 0.2 m/s, heave 0.3 m/s, roll, pitch 0.3 rad/s, yaw 0.5 rad/s.
+    Law with the defaults: stand-off 2 m; Starbug axes (surge, heave, roll, pitch, yaw enabled, sway disabled;
+    roll and pitch weighted 0.3); pseudo-inverse threshold 0.005; camera mount forwardCameraMount(0); adaptive gain (0.8
+    at zero, 0.2 at infinity, slope 15); limits surge 0.5 m/s, sway 0.2 m/s, heave 0.3 m/s, roll, pitch 0.3 rad/s, yaw
+    0.5 rad/s.
   */
   vpSSLServoLaw();
 
@@ -124,8 +133,9 @@ public:
   const vpHomogeneousMatrix &getCameraToVehicle() const { return m_vMc; }
   /*!
     Configures the law for a robot that moves the camera itself (vpSimulatorCamera, a robot arm's end
-    effector): vMc = identity and all six axes enabled with weight 1. The "vehicle" command is then the camera
-    twist.
+    effector): vMc = identity, all six axes enabled with weight 1 and ViSP's pseudo-inverse threshold 1e-6 (a
+    camera that follows every twist at once needs the weak direction to reach the facing pose). The "vehicle"
+    command is then the camera twist.
   */
   void setCameraRobot();
 
@@ -134,12 +144,22 @@ public:
   //! Whether \e axis is enabled.
   bool getAxisEnabled(vpSSLVehicleAxis axis) const;
   /*!
-    Weight of an enabled axis, in (0, 1] (default 1): its command is multiplied by it after the least-squares
-    solution. \exception vpException outside (0, 1].
+    Weight of an enabled axis, in (0, 1] (default 1, roll and pitch 0.3): the column of eJe and the command of
+    that axis are multiplied by it, so that the least-squares solution prefers the axes of larger weight (see the
+    class description). \exception vpException outside (0, 1].
   */
   void setAxisWeight(vpSSLVehicleAxis axis, double weight);
   //! Weight of \e axis.
   double getAxisWeight(vpSSLVehicleAxis axis) const;
+
+  /*!
+    Singular values of L cVe eJe below \e ratio times the largest are dropped from its pseudo-inverse
+    (vpServo::setPseudoInverseThreshold(); default 0.005, see the class description).
+    \exception vpException unless 0 <= ratio < 1.
+  */
+  void setPseudoInverseThreshold(double ratio);
+  //! Relative pseudo-inverse threshold.
+  double getPseudoInverseThreshold() const { return m_pseudoInverseThreshold; }
 
   //! Constant gain lambda > 0. \exception vpException if not > 0.
   void setGain(double lambda);
@@ -160,8 +180,11 @@ public:
   vpColVector computeControlLaw(const vpSSLServoInput &input);
   /*!
     Centring only (ALIGN state of vpSSLHomingBehaviour): the target centre's image point driven to the image
-    centre by the enabled rotation axes that turn the optical axis (pitch and yaw of a forward-looking camera;
-    the rotation about the optical axis cannot centre and is left out), no translation. Same checks and outputs.
+    centre by the enabled axes that move the image across: translations across the optical axis and rotations
+    that turn it (heave, sway, pitch and yaw of a forward-looking camera). Motions along the optical axis (surge,
+    the roll about it) cannot centre and are left out, so the range is kept. Axis weights apply as in
+    computeControlLaw(): with the defaults a target below is centred mostly by heave, since the hull rights its
+    pitch. Same checks and outputs.
   */
   vpColVector computeCentringLaw(const vpSSLServoInput &input);
 
@@ -206,7 +229,7 @@ public:
     (0, 0, Z*) (or at the docking depth described above when Z* < setMinPointStandOff()), identity rotation.
   */
   vpHomogeneousMatrix getDesiredPose(const vpSSLServoInput &input) const;
-  //! The vehicle Jacobian eJe of the enabled axes (6 x n).
+  //! The vehicle Jacobian eJe = S W of the enabled axes (6 x n), weights included.
   vpMatrix getVehicleJacobian() const;
 
 private:
@@ -221,6 +244,7 @@ private:
   vpHomogeneousMatrix m_vMc;
   bool m_enabled[6];
   double m_weight[6];
+  double m_pseudoInverseThreshold;
   vpAdaptiveGain m_gain;
   vpColVector m_vmax;
 
