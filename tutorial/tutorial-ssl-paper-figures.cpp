@@ -55,8 +55,8 @@ Options:
   --quick            Fewer points, 2 x 2 samples per pixel and fewer timing runs (for tests).
   --help             This help.
 
-Exit status: 0 on success, 1 on a bad option or input (one line on stderr), 2 when an output
-file cannot be written.
+Exit status: 0 on success, 2 on a bad option or input (one line on stderr), 1 when a run
+fails or an output file cannot be written.
 )";
 
 [[noreturn]] void fail(const std::string &msg, int code)
@@ -415,7 +415,7 @@ int main(int argc, char **argv)
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= argc)
-        fail(arg + ": missing value", 1);
+        fail(arg + ": missing value", 2);
       return argv[++i];
     };
     if (arg == "--help" || arg == "-h") {
@@ -429,15 +429,15 @@ int main(int argc, char **argv)
       quick = true;
       g_supersampling = 2;
     } else {
-      fail("unknown argument " + arg + " (see --help)", 1);
+      fail("unknown argument " + arg + " (see --help)", 2);
     }
   }
   if (!vpIoTools::checkFilename(sequence + "/frames.csv"))
-    fail("--sequence: " + sequence + "/frames.csv: missing (not a sequence folder?)", 1);
+    fail("--sequence: " + sequence + "/frames.csv: missing (not a sequence folder?)", 2);
   try {
     vpIoTools::makeDirectory(dir);
   } catch (const vpException &) {
-    fail(dir + ": cannot create the output folder", 2);
+    fail(dir + ": cannot create the output folder", 1);
   }
   std::ostringstream md;
   try {
@@ -446,12 +446,12 @@ int main(int argc, char **argv)
     figure5(dir, sequence, md);
     table1(quick, md);
   } catch (const vpException &e) {
-    fail(e.getStringMessage(), 1);
+    fail(e.getStringMessage(), 2);
   }
   std::cout << md.str();
   std::ofstream out(dir + "/figures.md");
   out << md.str();
   if (!out)
-    fail(dir + "/figures.md: cannot write", 2);
+    fail(dir + "/figures.md: cannot write", 1);
   return 0;
 }

@@ -58,8 +58,8 @@ Options:
   --colour              Write colour images (default grey, as the detector reads them).
   --help                This help.
 
-Progress goes to stderr; a summary line to stdout. Exit status: 0 on success, 1 on a bad
-option or input (one line on stderr), 2 when writing fails.
+Progress goes to stderr; a summary line to stdout. Exit status: 0 on success, 2 on a bad
+option or input (one line on stderr, nothing written), 1 when rendering or writing fails.
 )";
 
 std::string listing(const std::vector<std::string> &names, bool scenarios)
@@ -228,7 +228,7 @@ int main(int argc, char **argv)
     background = vpSSLBackground::fromName(backgroundName, seed);
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-simulate-sequence: " << e.getStringMessage() << std::endl;
-    return EXIT_FAILURE;
+    return 2;
   }
   std::error_code ec;
   if (!overwrite && std::filesystem::is_directory(output, ec) && !std::filesystem::is_empty(output, ec)) {
@@ -258,7 +258,7 @@ int main(int argc, char **argv)
     }
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-simulate-sequence: " << e.getStringMessage() << std::endl;
-    return EXIT_FAILURE;
+    return 2;
   }
   background.apply(renderer);
   // Beyond the range where the clearest channel's direct signal has fallen by 1e5, nothing is left of it, even
@@ -362,7 +362,7 @@ int main(int argc, char **argv)
     writer.close();
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-simulate-sequence: " << e.getStringMessage() << std::endl;
-    return e.getCode() == vpException::ioError ? 2 : EXIT_FAILURE;
+    return EXIT_FAILURE;
   }
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %u frames (%u with the target in view) of scenario %s, %s water, to %s in %.1f s (%.0f "

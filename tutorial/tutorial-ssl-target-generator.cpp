@@ -66,6 +66,8 @@ void printHelp(const char *prog)
             << "  --min-ring-mm X        rings (or stripes) thinner than X mm are not drawn; the centre then has the\n"
             << "                         colour of the innermost ring drawn. Default: 0.1 (about a printer's dot).\n"
             << "  --help                 print this help and exit.\n\n"
+            << "Exit status: 0 on success, 2 on a bad option or target file (nothing written), 1 when an output\n"
+            << "cannot be written (one line on stderr).\n\n"
             << "Sheet coordinates are the target frame: X right, Y down, seen from the printed side.\n"
             << "The name, radii and scale bar go where the sheet has room; a label that fits nowhere is left out\n"
             << "with a warning on stderr.\n";
@@ -538,12 +540,22 @@ int main(int argc, char **argv)
   } cleanup;
   try {
     bool help = false;
-    Options opt = parseOptions(argc, argv, help);
-    if (help) {
-      printHelp(argv[0]);
-      return 0;
+    Options opt;
+    Page page;
+    try {
+      opt = parseOptions(argc, argv, help);
+      if (help) {
+        printHelp(argv[0]);
+        return 0;
+      }
+      page = makePage(opt);
+    } catch (const vpException &e) {
+      std::cerr << "error: " << e.getStringMessage() << std::endl;
+      return 2; // a bad target file: nothing written
+    } catch (const std::runtime_error &e) {
+      std::cerr << "error: " << e.what() << std::endl;
+      return 2; // a bad option: nothing written
     }
-    Page page = makePage(opt);
     std::string prefix = opt.output.empty() ? page.name : opt.output;
 
     // Layout once, in sheet units, on a scratch surface; the three outputs then share it.

@@ -59,8 +59,8 @@ Options:
                         truth cMo_<id>.txt) and print its pose error per tag.
   --help                This help.
 
-Exit status: 0 on success, 1 on a bad option or input (one line on stderr), 2 when an output
-file cannot be written.
+Exit status: 0 on success, 2 on a bad option or input (one line on stderr), 1 when a run
+fails or an output file cannot be written.
 )";
 
 [[noreturn]] void fail(const std::string &msg, int code)
@@ -76,7 +76,7 @@ double parseNumber(const std::string &opt, const std::string &v, double min)
   if (v.empty() || *end != '\0' || !std::isfinite(x) || x < min) {
     std::ostringstream os;
     os << opt << ": expected a number >= " << min << ", got \"" << v << "\"";
-    fail(os.str(), 1);
+    fail(os.str(), 2);
   }
   return x;
 }
@@ -427,7 +427,7 @@ int main(int argc, char **argv)
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= argc)
-        fail(arg + ": missing value", 1);
+        fail(arg + ": missing value", 2);
       return argv[++i];
     };
     if (arg == "--help" || arg == "-h") {
@@ -448,7 +448,7 @@ int main(int argc, char **argv)
     } else if (arg == "--check-visp-benchmark") {
       vispDir = value();
     } else if (arg.size() > 1 && arg[0] == '-') {
-      fail("unknown option " + arg + " (see --help)", 1);
+      fail("unknown option " + arg + " (see --help)", 2);
     } else {
       opt.sequences.push_back(arg);
     }
@@ -457,28 +457,28 @@ int main(int argc, char **argv)
     try {
       return checkVispBenchmark(vispDir);
     } catch (const vpException &e) {
-      fail(e.getStringMessage(), 1);
+      fail(e.getStringMessage(), 2);
     }
   }
   if (opt.sequences.empty())
-    fail("no sequence folder given (see --help)", 1);
+    fail("no sequence folder given (see --help)", 2);
   size_t total = 0;
   for (const std::string &s : opt.sequences) {
     if (!vpIoTools::checkDirectory(s))
-      fail(s + ": not a folder", 1);
+      fail(s + ": not a folder", 2);
     if (!vpIoTools::checkFilename(s + "/frames.csv"))
-      fail(s + "/frames.csv: missing (not a sequence folder?)", 1);
+      fail(s + "/frames.csv: missing (not a sequence folder?)", 2);
     const size_t n = countFrames(s);
     total += (opt.maxFrames > 0 && n > opt.maxFrames) ? opt.maxFrames : n;
   }
   try {
     vpIoTools::makeDirectory(opt.outputDir);
   } catch (const vpException &e) {
-    fail(opt.outputDir + ": cannot create the output folder", 2);
+    fail(opt.outputDir + ": cannot create the output folder", 1);
   }
   std::ofstream framesCsv(opt.outputDir + "/frames.csv");
   if (!framesCsv)
-    fail(opt.outputDir + "/frames.csv: cannot write", 2);
+    fail(opt.outputDir + "/frames.csv: cannot write", 1);
   framesCsv << "sequence,method,frame,range_m,water,target_in_view,detected,false_detection,centre_err_px,"
                "position_err_m,angle_err_deg,time_ms\n";
 
@@ -491,7 +491,7 @@ int main(int argc, char **argv)
       if (progress.shown())
         std::cerr << std::endl; // end the progress bar's line
       const std::string msg = e.getStringMessage();
-      fail(msg.find(s) == std::string::npos ? s + ": " + msg : msg, 1);
+      fail(msg.find(s) == std::string::npos ? s + ": " + msg : msg, 2);
     }
   }
 
@@ -552,11 +552,11 @@ int main(int argc, char **argv)
     summaryCsvRow(summary, "all", kv.first.substr(0, kv.first.find(' ')), kv.first.substr(kv.first.find(' ') + 1),
                   kv.second);
   if (!report || !summary || !framesCsv)
-    fail(opt.outputDir + ": cannot write the report files", 2);
+    fail(opt.outputDir + ": cannot write the report files", 1);
   try {
     addPlots(byMethodWater, opt.bin, opt.outputDir);
   } catch (const vpException &e) {
-    fail(e.getStringMessage(), 2);
+    fail(e.getStringMessage(), 1);
   }
   return 0;
 }

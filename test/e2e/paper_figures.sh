@@ -27,8 +27,10 @@ fi
 expect_error() { # WHAT PATTERN ARGS...
   local what="$1" pattern="$2"
   shift 2
-  if "$BIN" "$@" >err.out 2>err.txt; then
-    fail "$what: exit 0"
+  "$BIN" "$@" >err.out 2>err.txt
+  local status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$what: exit status $status, expected 2 (bad option or input)"
   elif [ "$(wc -l <err.txt)" -ne 1 ] || ! grep -q -- "$pattern" err.txt; then
     fail "$what: stderr: $(cat err.txt)"
   else

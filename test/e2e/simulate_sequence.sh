@@ -48,14 +48,14 @@ else
   fail "--help exit code $?"
 fi
 
-# Bad input: exit status 1 and exactly one line on stderr naming the problem.
+# Bad input: exit status 2 and exactly one line on stderr naming the problem.
 bad() {
   local expect="$1"
   shift
   "$BIN" "$@" >bad.out 2>bad.err
   local status=$?
-  if [ "$status" -ne 1 ]; then
-    fail "$* exited with $status, expected 1"
+  if [ "$status" -ne 2 ]; then
+    fail "$* exited with $status, expected 2"
   elif [ "$(wc -l <bad.err)" -ne 1 ]; then
     fail "$*: stderr has $(wc -l <bad.err) lines: $(cat bad.err)"
   elif ! grep -q -- "$expect" bad.err; then

@@ -131,12 +131,14 @@ else
   fail "--target ssl1-single.txt: $(cat single.err)"
 fi
 
-# Errors: exit code != 0 and exactly one line on stderr naming the problem.
+# Errors: exit status 2 and exactly one line on stderr naming the problem.
 expect_error() { # $1 description, $2 text expected on stderr, rest: arguments
   local what="$1" want="$2"
   shift 2
-  if "$BIN" "$@" >err.out 2>err.txt; then
-    fail "$what: exit code 0"
+  "$BIN" "$@" >err.out 2>err.txt
+  local status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$what: exit status $status, expected 2 (bad option or input)"
   elif [ "$(wc -l <err.txt)" -ne 1 ]; then
     fail "$what: stderr has $(wc -l <err.txt) lines: $(tr '\n' '|' <err.txt)"
   elif ! grep -q -F -- "$want" err.txt; then

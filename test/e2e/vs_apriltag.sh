@@ -31,12 +31,14 @@ else
   fail "--help exited non-zero"
 fi
 
-# Bad arguments: non-zero exit, exactly one line on stderr naming the problem.
+# Bad arguments: exit status 2, exactly one line on stderr naming the problem.
 expect_error() { # WHAT PATTERN ARGS...
   local what="$1" pattern="$2"
   shift 2
-  if "$BIN" "$@" >err.out 2>err.txt; then
-    fail "$what: exit 0"
+  "$BIN" "$@" >err.out 2>err.txt
+  local status=$?
+  if [ "$status" -ne 2 ]; then
+    fail "$what: exit status $status, expected 2 (bad option or input)"
   elif [ "$(wc -l <err.txt)" -ne 1 ]; then
     fail "$what: $(wc -l <err.txt) lines on stderr: $(cat err.txt)"
   elif ! grep -q -- "$pattern" err.txt; then
