@@ -33,8 +33,8 @@ the ground truth (when the sequence has it).
 
 Options:
   --sequence DIR        Recorded sequence folder. Required.
-  --csv FILE            CSV written (default: ssl-tracker.csv; "-": standard output, the per-frame
-                        lines then go to stderr). Columns: frame, t, state, nb_points, full_search,
+  --csv FILE            CSV written ("-": standard output, the per-frame lines then go to stderr;
+                        default: DIR/ssl-tracker.csv with --output-dir DIR, else no CSV). Columns: frame, t, state, nb_points, full_search,
                         small_mode, orientation_known, tx ty tz tux tuy tuz (estimated cMo,
                         theta-u), gt_* (ground truth), range (m), position_error (m, of the target
                         origin; without a known orientation, of the landmark centre the filter
@@ -173,7 +173,8 @@ void drawTarget(vpImage<vpRGBa> &out, const vpSSLTarget &target, const vpHomogen
 
 int main(int argc, char **argv)
 {
-  std::string sequence, csvPath = "ssl-tracker.csv", outputDir, smallMode = "auto";
+  bool csvSet = false;
+  std::string sequence, csvPath, outputDir, smallMode = "auto";
   bool display = false, useOdometry = true, quiet = false, summary = false;
   unsigned int particles = 1000, fullSearch = 10;
   long seed = 1, maxFrames = -1;
@@ -200,6 +201,7 @@ int main(int argc, char **argv)
       sequence = value();
     } else if (a == "--csv") {
       csvPath = value();
+      csvSet = true;
     } else if (a == "--output-dir") {
       outputDir = value();
     } else if (a == "--display") {
@@ -234,8 +236,11 @@ int main(int argc, char **argv)
   if (sequence.empty()) {
     fail("--sequence is required (see --help)", 2);
   }
-  if (csvPath.empty()) {
+  if (csvSet && csvPath.empty()) {
     fail("option --csv: empty file name", 2);
+  }
+  if (!csvSet && !outputDir.empty()) {
+    csvPath = outputDir + "/ssl-tracker.csv"; // beside the annotated images, never over a file in the current folder
   }
 
   vpSSLSequenceReader reader;
@@ -262,13 +267,21 @@ int main(int argc, char **argv)
 
   std::ofstream csvFile;
   const bool csvToStdout = csvPath == "-";
-  if (!csvToStdout) {
+  std::ostream noCsv(nullptr); // no buffer: without a CSV the rows are dropped
+  if (!csvToStdout && !csvPath.empty()) {
+    if (!outputDir.empty() && !csvSet) {
+      try {
+        vpIoTools::makeDirectory(outputDir);
+      } catch (const vpException &) {
+        fail(outputDir + ": cannot create the folder", 1);
+      }
+    }
     csvFile.open(csvPath);
     if (!csvFile) {
-      fail(csvPath + ": cannot write the CSV", 2);
+      fail(csvPath + ": cannot write the CSV", 1);
     }
   }
-  std::ostream &csv = csvToStdout ? std::cout : csvFile;
+  std::ostream &csv = csvToStdout ? std::cout : csvPath.empty() ? static_cast<std::ostream &>(noCsv) : csvFile;
   std::ostream &log = csvToStdout ? std::cerr : std::cout;
   if (!outputDir.empty()) {
     try {
@@ -425,7 +438,7 @@ int main(int argc, char **argv)
   }
   csv.flush();
   std::cerr << "tutorial-ssl-tracker: " << nbFrames << " frame(s), tracking in " << nbTracking
-            << (csvToStdout ? std::string() : ", CSV in " + csvPath)
+            << (csvToStdout || csvPath.empty() ? std::string() : ", CSV in " + csvPath)
             << (outputDir.empty() ? std::string() : ", annotated images in " + outputDir + "/") << std::endl;
   if (summary) {
     log << "\n| range (m) | frames | single-frame: frames (full) | position error (mm) median / p90 | angle error "
