@@ -1,0 +1,349 @@
+/*!
+  \file ssl_servo_loop.h
+  \brief Tutorial-local closed loop of tutorial-ssl-servo and tutorial-ssl-servo-monte-carlo: the scene (vehicle,
+  target, water, behaviour), and one control step (scenario events, rendering, detection, servo input,
+  behaviour update, logged row). Header-only, like ssl_apriltag_baseline.h.
+*/
+#ifndef SSL_SERVO_LOOP_H
+#define SSL_SERVO_LOOP_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <visp3/core/vpCameraParameters.h>
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpHomogeneousMatrix.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpMath.h>
+#include <visp3/core/vpPoint.h>
+#include <visp3/core/vpRxyzVector.h>
+#include <visp3/core/vpTranslationVector.h>
+#include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLAuvSimulator.h>
+#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl/vpSSLHomingBehaviour.h>
+#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl/vpSSLServoInput.h>
+#include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl/vpSSLWaterModel.h>
+
+#include "ssl_apriltag_baseline.h"
+
+namespace sslservo {
+
+//! How the target is found at each step.
+enum class Method
+{
+  Ssl,      ///< vpSSLTracker on the rendered ssl3-a3 sheet.
+  AprilTag, ///< The AprilTag baseline (36h11) on the rendered tag sheet.
+  Truth     ///< Perfect sensor: the ssl3-a3 landmarks projected at the true pose when in view (no image).
+};
+
+//! "ssl", "apriltag", "truth".
+inline std::string methodName(Method m)
+{
+  return m == Method::Ssl ? "ssl" : m == Method::AprilTag ? "apriltag" : "truth";
+}
+
+//! \e name as a Method; false when it is none of "ssl", "apriltag", "truth".
+inline bool parseMethod(const std::string &name, Method &m)
+{
+  if (name == "ssl") {
+    m = Method::Ssl;
+  } else if (name == "apriltag") {
+    m = Method::AprilTag;
+  } else if (name == "truth") {
+    m = Method::Truth;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+//! The camera of the paper's vehicle (data/camera/camera-640x480.xml) scaled to \e width x \e height (same field of
+//! view). Reads a file: call it once, before any thread starts.
+inline vpCameraParameters scaledCamera(unsigned int width, unsigned int height)
+{
+  unsigned int w0 = 0, h0 = 0;
+  const vpCameraParameters cam0 =
+      vpSSLCameraFile::load(std::string(VISP_SSL_DATA_DIR) + "/camera/camera-640x480.xml", "Camera", &w0, &h0);
+  const double sx = static_cast<double>(width) / w0, sy = static_cast<double>(height) / h0;
+  vpCameraParameters cam;
+  cam.initPersProjWithoutDistortion(cam0.get_px() * sx, cam0.get_py() * sy, cam0.get_u0() * sx, cam0.get_v0() * sy);
+  return cam;
+}
+
+//! Everything that is fixed for one run: the water, the target, the vehicle's start, the current and the behaviour.
+struct Scene
+{
+  std::string water = "clear";  //!< vpSSLWaterModel preset.
+  vpHomogeneousMatrix wMoHome;  //!< Target (sheet frame) pose at the start.
+  vpHomogeneousMatrix wMvStart; //!< Vehicle pose at the start.
+  vpTranslationVector current;  //!< Constant water current (world frame, m/s).
+  double standOff = 2.;         //!< Stand-off held in HOME (m).
+  double autoDockHold = -1.;    //!< Auto dock after this long at the stand-off (s); < 0: never.
+  double blindDockRange = 1.3;  //!< See vpSSLHomingBehaviour::setBlindDock().
+  double blindDockSpeed = 0.15; //!< See vpSSLHomingBehaviour::setBlindDock().
+  double timeStep = 0.2;        //!< Control period (s): vision at 5 Hz, dynamics sub-stepped inside.
+  std::string scenario;         //!< tutorial-ssl-servo scenario whose events apply (stepEvents()), "" none.
+  double duration = 0.;         //!< Scenario duration (s), for the event times.
+};
+
+/*!
+  The scenes of tutorial-ssl-servo (paper Sec. 5): fig7, fig8, fig9 (docking), field (coastal, swaying target), all
+  from 4.5 m south of the target (camera 3.9 m from it; field 3 m, camera 2.4 m), 0.3 m off its axis, 10 degrees
+  off its heading, 0.2 m below it.
+*/
+inline Scene paperScene(const std::string &scenario, double duration)
+{
+  Scene s;
+  const bool field = scenario == "field";
+  s.water = field ? "coastal" : "clear";
+  s.standOff = field ? 1.5 : 2.0;
+  s.wMoHome = vpSSLScenario("approach").getTargetHome();
+  const vpTranslationVector tHome = s.wMoHome.getTranslationVector();
+  // In coastal water (4 m visibility) the target can only be seen from about 3 m.
+  const double back = field ? 3.0 : 4.5;
+  s.wMvStart = vpHomogeneousMatrix(vpTranslationVector(tHome[0] - back, tHome[1] + 0.3, tHome[2] + 0.2),
+                                   vpRotationMatrix(vpRxyzVector(0., 0., 0.17)));
+  if (scenario == "fig9") {
+    s.autoDockHold = std::min(10., 0.1 * duration); // dock after holding the stand-off
+  }
+  s.scenario = scenario == "fig7" ? "fig7" : scenario == "fig8" ? "fig8" : field ? "field" : "";
+  s.duration = duration;
+  return s;
+}
+
+//! One logged control step.
+struct Row
+{
+  double t, nbPoints, estRange, trueRange, yawDemand, yawRate, heading, depth, lateral, targetY, collision;
+  vpSSLHomingState state;
+  bool seen; //!< The behaviour saw the target at this step (vpSSLHomingBehaviour::getTargetSeen()).
+};
+
+/*!
+  Stand-off RMS error (m) over the HOME steps (true range) once settled, i.e. after the range first came within
+  0.1 m of the stand-off (the approach from the start is not an error); NaN when no step qualifies. \e n gets the
+  number of steps.
+*/
+inline double standOffRms(const std::vector<Row> &rows, double standOff, size_t &n)
+{
+  double sum = 0.;
+  n = 0;
+  bool settled = false;
+  for (const Row &r : rows) {
+    settled = settled || (r.state == SSL_HOMING_HOME && std::fabs(r.trueRange - standOff) < 0.1);
+    if (settled && r.state == SSL_HOMING_HOME && std::isfinite(r.trueRange)) {
+      sum += (r.trueRange - standOff) * (r.trueRange - standOff);
+      ++n;
+    }
+  }
+  return n ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
+}
+
+//! Writes \e rows as the CSV of tutorial-ssl-servo (header included). \exception vpException if it cannot write.
+inline void writeRows(const std::string &path, const std::vector<Row> &rows)
+{
+  std::ofstream csv(path);
+  if (!csv) {
+    throw vpException(vpException::ioError, "%s: cannot write", path.c_str());
+  }
+  auto num = [](double x, int digits) { return std::isfinite(x) ? sslbench::fmt(x, digits) : std::string(); };
+  csv << "t,state,nb_points,est_range,true_range,yaw_rate_demand,yaw_rate,heading_deg,depth,lateral,target_y,"
+         "collision\n";
+  for (const Row &r : rows) {
+    csv << num(r.t, 2) << ',' << vpSSLHomingBehaviour::getStateName(r.state) << ',' << num(r.nbPoints, 0) << ','
+        << num(r.estRange, 4) << ',' << num(r.trueRange, 4) << ',' << num(r.yawDemand, 4) << ',' << num(r.yawRate, 4)
+        << ',' << num(r.heading, 2) << ',' << num(r.depth, 4) << ',' << num(r.lateral, 4) << ',' << num(r.targetY, 4)
+        << ',' << num(r.collision, 0) << '\n';
+  }
+  csv.close();
+  if (!csv) {
+    throw vpException(vpException::ioError, "%s: write failed", path.c_str());
+  }
+}
+
+/*!
+  The closed loop of one run: the simulated AUV, the renderer and water model, the detector of the method and the
+  homing behaviour, each its own instance (two ClosedLoop objects share nothing, so they may run in two threads).
+
+  \code
+  sslservo::ClosedLoop loop(scene, sslservo::Method::Ssl, cam, 640, 480, 1, seed);
+  for (int k = 0; k <= nbSteps; ++k) {
+    const sslservo::Row r = loop.step(k); // events, image, detection, behaviour update
+    loop.apply();                         // the command drives the vehicle for one time step
+  }
+  \endcode
+*/
+class ClosedLoop
+{
+public:
+  ClosedLoop(const Scene &scene, Method method, const vpCameraParameters &cam, unsigned int width, unsigned int height,
+             unsigned int supersampling, long seed)
+      : m_scene(scene), m_method(method), m_cam(cam), m_width(width), m_height(height), m_seed(seed),
+        m_water(vpSSLWaterModel::preset(scene.water)), m_renderer(cam, width, height),
+        m_sheet(vpSSLAprilTagSheet::a3(0)), m_target(vpSSLTarget::ssl3a3()),
+        m_tracker(m_target, cam, m_auv.getCameraToVehicle()), m_tagFinder(m_sheet, cam)
+  {
+    m_auv.setTimeStep(scene.timeStep);
+    m_auv.setTargetPose(scene.wMoHome);
+    m_auv.reset(scene.wMvStart, seed);
+    m_auv.setCurrent(scene.current);
+
+    m_homing.getServoLaw().setCameraToVehicle(m_auv.getCameraToVehicle());
+    m_homing.setStandOff(scene.standOff);
+    if (scene.autoDockHold >= 0.) {
+      m_homing.setAutoDock(scene.autoDockHold);
+    }
+    // The 0.3 m ssl3-a3 pattern overflows the image within about 1.2 m (0.6 m for the behaviour's default): from
+    // there the approach is blind, holding the last surge.
+    m_homing.setBlindDock(scene.blindDockRange, scene.blindDockSpeed);
+
+    m_renderer.setSupersampling(supersampling);
+    if (method == Method::AprilTag) {
+      m_renderer.setAprilTagSheet(m_sheet);
+    } else {
+      m_renderer.setTarget(m_target);
+    }
+    // Nothing is left of the direct signal beyond a 1e5 attenuation: stop the rays there (as
+    // tutorial-ssl-simulate-sequence).
+    const std::array<double, 3> &betaD = m_water.getAttenuation();
+    const double clearest = std::min({betaD[0], betaD[1], betaD[2]});
+    if (clearest > 0.) {
+      m_renderer.setMaxRange(std::log(1e5) / clearest);
+    }
+    // The renderer takes the pose of the tag frame for an AprilTag sheet; the simulator the sheet frame.
+    m_sMo = method == Method::AprilTag ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();
+    m_tracker.setSeed(seed);
+    for (const vpSSLTargetLandmark &l : m_target.getLandmarks()) {
+      m_truthPoints.emplace_back(l.x, l.y, l.z);
+    }
+  }
+
+  vpSSLAuvSimulator &getAuv() { return m_auv; }                  //!< The vehicle.
+  vpSSLHomingBehaviour &getHoming() { return m_homing; }         //!< The behaviour.
+  const Scene &getScene() const { return m_scene; }              //!< The scene.
+  const vpImage<unsigned char> &getImage() const { return m_I; } //!< Last camera image (not with Method::Truth).
+
+  /*!
+    Control step \e k (time getAuv().getTime()): the scenario's events, the camera image at the true pose, the
+    detection, the behaviour's update. The vehicle does not move: apply() sends the command.
+  */
+  Row step(int k)
+  {
+    const double t = m_auv.getTime();
+    stepEvents(t);
+
+    // The camera image at the true pose (open water when the target is out).
+    const vpHomogeneousMatrix cMo = m_auv.get_cMo();
+    const vpHomogeneousMatrix wMo = m_auv.getTargetPose();
+    if (m_method == Method::Truth) {
+      // no image needed
+    } else if (m_auv.isTargetInWater()) {
+      m_renderer.setWaterSurface(vpSSLScenario::surfaceInTarget(wMo * m_sMo));
+      m_renderer.render(cMo * m_sMo, m_reflectance, m_range);
+    } else {
+      m_reflectance.resize(m_height, m_width, 0.f);
+      m_range.resize(m_height, m_width, std::numeric_limits<float>::infinity());
+    }
+    if (m_method != Method::Truth) {
+      m_water.apply(m_reflectance, m_range, m_cam, t, m_seed * 1000003L + k, m_I);
+    }
+
+    vpSSLServoInput input = vpSSLServoInput::none();
+    if (m_method == Method::Truth) {
+      if (m_auv.isTargetInWater() && m_renderer.isTargetInView(cMo)) {
+        input = vpSSLServoInput::fromPose(m_truthPoints, cMo);
+      }
+    } else if (m_method == Method::AprilTag) {
+      if (m_tagFinder.detect(m_I)) {
+        vpDetectorAprilTag &det = m_tagFinder.getDetector();
+        const std::vector<int> ids = det.getTagsId();
+        for (size_t i = 0; i < ids.size(); ++i) {
+          if (ids[i] == m_sheet.getId()) {
+            input =
+                vpSSLServoInput::fromAprilTag(det.getPolygon(i), m_tagFinder.getPose(), m_sheet.getTagSize(), m_cam);
+            break;
+          }
+        }
+      }
+    } else {
+      m_tracker.track(m_I, m_auv.getOdometry());
+      input = vpSSLServoInput::fromTracker(m_tracker);
+    }
+
+    const vpColVector command = m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision());
+    Row r;
+    r.t = t;
+    r.state = m_homing.getState();
+    r.seen = m_homing.getTargetSeen();
+    r.nbPoints = input.valid ? input.nbPoints : 0.;
+    r.estRange = m_homing.getRange();
+    r.trueRange = m_auv.isTargetInWater() ? cMo[2][3] : std::numeric_limits<double>::quiet_NaN();
+    r.yawDemand = command[5];
+    r.yawRate = m_auv.getBodyVelocity()[5];
+    r.heading = vpMath::deg(vpRxyzVector(m_auv.get_wMv().getRotationMatrix())[2]);
+    r.depth = m_auv.getDepth();
+    r.lateral = m_auv.get_wMv()[1][3] - wMo[1][3];
+    r.targetY = wMo[1][3] - m_scene.wMoHome[1][3];
+    r.collision = m_auv.getCollision() ? 1. : 0.;
+    return r;
+  }
+
+  //! Sends the behaviour's last command to the vehicle: getScene().timeStep seconds of dynamics.
+  void apply() { m_homing.apply(m_auv); }
+
+private:
+  //! The tutorial-ssl-servo scenario's events at time \e t: the target taken out and put back, moved, swaying.
+  void stepEvents(double t)
+  {
+    const std::string &scenario = m_scene.scenario;
+    const double D = m_scene.duration;
+    if (scenario == "fig7") {
+      m_auv.setTargetInWater(!(t >= 0.47 * D && t < 0.75 * D));
+    } else if (scenario == "fig8") {
+      // Moved 0.6 m to port (west, -y) at 0.3 D, then 0.6 m to starboard of home at 0.6 D.
+      const double dy = t < 0.3 * D ? 0. : t < 0.6 * D ? -0.6 : 0.6;
+      vpHomogeneousMatrix wMo = m_scene.wMoHome;
+      wMo[1][3] += dy;
+      m_auv.setTargetPose(wMo);
+    } else if (scenario == "field") {
+      // Swaying on its line: 0.25 m, 12 s period, with a little yaw.
+      const double s = std::sin(2. * M_PI * t / 12.);
+      vpHomogeneousMatrix wMo = m_scene.wMoHome * vpHomogeneousMatrix(vpTranslationVector(0.25 * s, 0., 0.),
+                                                                      vpRotationMatrix(vpRxyzVector(0., 0.1 * s, 0.)));
+      m_auv.setTargetPose(wMo);
+    }
+  }
+
+  Scene m_scene;
+  Method m_method;
+  vpCameraParameters m_cam;
+  unsigned int m_width, m_height;
+  long m_seed;
+  vpSSLAuvSimulator m_auv;
+  vpSSLHomingBehaviour m_homing;
+  vpSSLWaterModel m_water;
+  vpSSLRenderer m_renderer;
+  vpSSLAprilTagSheet m_sheet;
+  vpSSLTarget m_target; // kept alive: the tracker and the truth points refer to its landmarks
+  vpSSLTracker m_tracker;
+  sslbench::AprilTagBaseline m_tagFinder;
+  vpHomogeneousMatrix m_sMo;
+  std::vector<vpPoint> m_truthPoints;
+  vpImage<float> m_reflectance, m_range;
+  vpImage<unsigned char> m_I;
+};
+
+} // namespace sslservo
+
+#endif

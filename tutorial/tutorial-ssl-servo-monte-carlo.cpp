@@ -1,0 +1,486 @@
+//! Monte Carlo docking benchmark (issue 7): the closed loop of tutorial-ssl-servo from random start poses, currents
+//! and waters, the same draws for every method; docking success rate, stand-off error and time to dock per method
+//! and water as runs.csv and a Markdown summary.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <visp3/core/vpIoTools.h>
+#include <visp3/core/vpRxyzVector.h>
+#include <visp3/ssl/vpSSLHomingBehaviour.h>
+#include <visp3/ssl/vpSSLScenario.h>
+
+#include "ssl_servo_loop.h"
+
+namespace {
+const char *kUsage = R"(Usage: tutorial-ssl-servo-monte-carlo [options]
+Monte Carlo docking benchmark: N runs of the closed loop of tutorial-ssl-servo (simulated AUV, rendered images,
+detection, homing behaviour with auto-dock) from random starts, the same draws for every method. Per run: start
+2.5-5 m in front of the target (camera to target centre, along the target's axis), lateral offset +-0.6 m,
+heading +-20 deg, depth offset +-0.4 m, current 0-0.15 m/s in a random horizontal direction, water clear or
+coastal (coastal only for starts <= 3.5 m, its visibility limit); stand-off 2 m (coastal 1.5 m), docking after
+holding the stand-off for 10 s. Writes DIR/runs.csv (one row per run and method, draws included) and
+DIR/summary.md (also on stdout): docking success, stand-off RMS and time to dock per method and water.
+Options:
+  --runs N             Runs per method (default 20).
+  --seed S             Seed of the draws and of the sensors (default 1); run i uses the same draws for all methods.
+  --methods LIST       Comma-separated among ssl, apriltag, truth (default ssl,apriltag).
+  --time-limit S       Simulated seconds per run (default 120).
+  --max-current V      Largest current drawn (m/s, default 0.15; 0: still water).
+  --threads T          Runs in parallel (default 2); the results do not depend on it.
+  --traces             Also write each run's steps as DIR/run-<i>-<method>.csv (tutorial-ssl-servo's columns).
+  --output-dir DIR     Where runs.csv and summary.md go (default ".", created if needed).
+  --width W            Image width (camera of data/camera/camera-640x480.xml scaled; default 640).
+  --height H           Image height (default 480).
+  --small              320 x 240 camera (fast, but ssl3-a3 is then too small to be detected beyond about 3 m).
+  --quiet              No progress on stderr.
+  --help               This help.
+runs.csv columns: run, method, water, seed, start_distance, lateral, heading_deg, depth_offset, current_speed,
+current_dir_deg, stand_off, start_range, docked, time_to_dock, standoff_rms, settled_steps, first_detection,
+collisions_outside_dock, lost_events, final_state, sim_time.
+)";
+
+struct Options
+{
+  long runs = 20;
+  long seed = 1;
+  std::vector<sslservo::Method> methods = {sslservo::Method::Ssl, sslservo::Method::AprilTag};
+  double timeLimit = 120.;
+  double maxCurrent = 0.15;
+  long threads = 2;
+  bool traces = false;
+  std::string outputDir = ".";
+  unsigned int width = 640, height = 480;
+  bool small = false;
+  bool quiet = false;
+};
+
+// Thrown for a bad command line: exit code 2.
+struct UsageError
+{
+  std::string message;
+};
+
+double parseDouble(const std::string &name, const std::string &text)
+{
+  char *end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) {
+    throw UsageError{name + ": not a number: \"" + text + "\""};
+  }
+  return v;
+}
+
+long parseInteger(const std::string &name, const std::string &text, long minimum, long maximum)
+{
+  char *end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < minimum || v > maximum) {
+    throw UsageError{name + ": expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+                     "], got \"" + text + "\""};
+  }
+  return v;
+}
+
+std::vector<sslservo::Method> parseMethods(const std::string &text)
+{
+  std::vector<sslservo::Method> methods;
+  std::stringstream ss(text);
+  std::string name;
+  while (std::getline(ss, name, ',')) {
+    sslservo::Method m;
+    if (!sslservo::parseMethod(name, m)) {
+      throw UsageError{"--methods: unknown \"" + name + "\" (ssl, apriltag, truth)"};
+    }
+    if (std::find(methods.begin(), methods.end(), m) != methods.end()) {
+      throw UsageError{"--methods: \"" + name + "\" given twice"};
+    }
+    methods.push_back(m);
+  }
+  if (methods.empty() || text.back() == ',') {
+    throw UsageError{"--methods: expected a comma-separated list of ssl, apriltag, truth, got \"" + text + "\""};
+  }
+  return methods;
+}
+
+Options parse(int argc, char **argv, bool &help)
+{
+  Options o;
+  help = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        throw UsageError{a + " needs a value"};
+      }
+      return argv[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      help = true;
+    } else if (a == "--runs") {
+      o.runs = parseInteger(a, value(), 1, 10000);
+    } else if (a == "--seed") {
+      o.seed = parseInteger(a, value(), 0, 1000000);
+    } else if (a == "--methods") {
+      o.methods = parseMethods(value());
+    } else if (a == "--time-limit") {
+      o.timeLimit = parseDouble(a, value());
+      if (o.timeLimit <= 0. || o.timeLimit > 3600.) {
+        throw UsageError{"--time-limit: expected a value in (0, 3600] s"};
+      }
+    } else if (a == "--max-current") {
+      o.maxCurrent = parseDouble(a, value());
+      if (o.maxCurrent < 0. || o.maxCurrent > 2.) {
+        throw UsageError{"--max-current: expected a value in [0, 2] m/s"};
+      }
+    } else if (a == "--traces") {
+      o.traces = true;
+    } else if (a == "--threads") {
+      o.threads = parseInteger(a, value(), 1, 64);
+    } else if (a == "--output-dir") {
+      o.outputDir = value();
+    } else if (a == "--width") {
+      o.width = static_cast<unsigned int>(parseInteger(a, value(), 64, 10000));
+    } else if (a == "--height") {
+      o.height = static_cast<unsigned int>(parseInteger(a, value(), 48, 10000));
+    } else if (a == "--small") {
+      o.small = true;
+    } else if (a == "--quiet") {
+      o.quiet = true;
+    } else {
+      throw UsageError{"unknown option " + a + " (see --help)"};
+    }
+  }
+  if (o.small) {
+    o.width = 320;
+    o.height = 240;
+  }
+  return o;
+}
+
+// The random conditions of one run, shared by every method.
+struct Draw
+{
+  int run;
+  long seed;           // sensors and image noise
+  bool coastal;        // water preset: coastal (4 m visibility) or clear
+  double distance;     // camera to target centre along the target's axis (m)
+  double lateral;      // camera offset across the target's axis (m, east)
+  double heading;      // vehicle heading off the target's axis (rad)
+  double depthOffset;  // camera depth minus target centre depth (m)
+  double currentSpeed; // m/s
+  double currentDir;   // rad from north towards east
+};
+
+// Uniform in [a, b) from 53 bits of the generator: std::uniform_real_distribution is implementation-defined, this
+// gives the same draws with every standard library.
+double uniform(std::mt19937_64 &g, double a, double b)
+{
+  return a + (b - a) * static_cast<double>(g() >> 11) * 0x1.0p-53;
+}
+
+Draw makeDraw(long seed, int run, double maxCurrent)
+{
+  std::mt19937_64 g(static_cast<std::uint64_t>(seed) * 1000003ULL + static_cast<std::uint64_t>(run));
+  Draw d;
+  d.run = run;
+  d.seed = seed * 100003L + run + 1;
+  d.coastal = uniform(g, 0., 1.) < 0.5;
+  // Beyond 3.5 m the target cannot be seen in coastal water: the run would only measure the search.
+  d.distance = uniform(g, 2.5, d.coastal ? 3.5 : 5.);
+  d.lateral = uniform(g, -0.6, 0.6);
+  d.heading = vpMath::rad(uniform(g, -20., 20.));
+  d.depthOffset = uniform(g, -0.4, 0.4);
+  d.currentSpeed = uniform(g, 0., maxCurrent);
+  d.currentDir = uniform(g, 0., 2. * M_PI);
+  return d;
+}
+
+sslservo::Scene makeScene(const Draw &d)
+{
+  sslservo::Scene s;
+  s.water = d.coastal ? "coastal" : "clear";
+  s.standOff = d.coastal ? 1.5 : 2.0;
+  s.autoDockHold = 10.;
+  s.wMoHome = vpSSLScenario("approach").getTargetHome();
+  // The camera d.distance south of the target centre (the target faces south), then the vehicle origin behind it.
+  const vpTranslationVector tHome = s.wMoHome.getTranslationVector();
+  const vpTranslationVector wtc(tHome[0] - d.distance, tHome[1] + d.lateral, tHome[2] + d.depthOffset);
+  const vpRotationMatrix wRv(vpRxyzVector(0., 0., d.heading));
+  const vpTranslationVector vtc = vpSSLScenario::getDefaultCameraToVehicle().getTranslationVector();
+  s.wMvStart = vpHomogeneousMatrix(wtc - wRv * vtc, wRv);
+  s.current = vpTranslationVector(d.currentSpeed * std::cos(d.currentDir), d.currentSpeed * std::sin(d.currentDir), 0.);
+  return s;
+}
+
+// What one run gave.
+struct Result
+{
+  double startRange = NAN;
+  bool docked = false;
+  double timeToDock = NAN;
+  double standOffRms = NAN;
+  size_t settledSteps = 0;
+  double firstDetection = NAN;
+  int collisionsOutsideDock = 0;
+  int lostEvents = 0;
+  vpSSLHomingState finalState = SSL_HOMING_SEARCH;
+  double simTime = 0.;
+  double wallTime = 0.; // not written: it depends on the load and the thread count
+};
+
+Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &cam, const Options &opt)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const sslservo::Scene scene = makeScene(d);
+  sslservo::ClosedLoop loop(scene, method, cam, opt.width, opt.height, 1, d.seed);
+  Result res;
+  res.startRange = loop.getAuv().get_cMo()[2][3];
+  std::vector<sslservo::Row> rows;
+  const int nbSteps = static_cast<int>(std::lround(opt.timeLimit / scene.timeStep));
+  vpSSLHomingState previous = SSL_HOMING_SEARCH;
+  bool previousCollision = false;
+  for (int k = 0; k <= nbSteps; ++k) {
+    const sslservo::Row r = loop.step(k);
+    rows.push_back(r);
+    if (r.seen && !std::isfinite(res.firstDetection)) {
+      res.firstDetection = r.t;
+    }
+    // A collision that starts while docking is the goal; any other one is a bump into the board.
+    const bool collision = r.collision > 0.5;
+    if (collision && !previousCollision && previous != SSL_HOMING_DOCK && previous != SSL_HOMING_DOCKED) {
+      ++res.collisionsOutsideDock;
+    }
+    // The behaviour falls back to SEARCH only after losing the target for its lost timeout.
+    if (r.state == SSL_HOMING_SEARCH && previous != SSL_HOMING_SEARCH) {
+      ++res.lostEvents;
+    }
+    previous = r.state;
+    previousCollision = collision;
+    res.simTime = r.t;
+    if (r.state == SSL_HOMING_DOCKED) {
+      res.docked = true;
+      res.timeToDock = r.t;
+      break;
+    }
+    loop.apply();
+  }
+  res.finalState = previous;
+  res.standOffRms = sslservo::standOffRms(rows, scene.standOff, res.settledSteps);
+  if (opt.traces) {
+    sslservo::writeRows(opt.outputDir + "/run-" + std::to_string(d.run) + "-" + sslservo::methodName(method) + ".csv",
+                        rows);
+  }
+  res.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+std::string num(double x, int digits)
+{
+  if (!std::isfinite(x)) {
+    return "";
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
+  return buf;
+}
+
+// One line of the summary table: the runs of one method, in one water or in all ("all").
+std::string summaryLine(const std::string &method, const std::string &water, const std::vector<const Result *> &runs)
+{
+  std::vector<double> rms, ttd, detection;
+  size_t docked = 0;
+  int collisions = 0, lost = 0;
+  for (const Result *r : runs) {
+    docked += r->docked ? 1 : 0;
+    rms.push_back(r->standOffRms);
+    ttd.push_back(r->timeToDock);
+    detection.push_back(r->firstDetection);
+    collisions += r->collisionsOutsideDock;
+    lost += r->lostEvents;
+  }
+  const size_t nbRms =
+      static_cast<size_t>(std::count_if(rms.begin(), rms.end(), [](double x) { return std::isfinite(x); }));
+  const size_t nbDetected =
+      static_cast<size_t>(std::count_if(detection.begin(), detection.end(), [](double x) { return std::isfinite(x); }));
+  std::ostringstream os;
+  os << "| " << method << " | " << water << " | " << docked << "/" << runs.size() << " | "
+     << sslbench::fmt(runs.empty() ? NAN : 100. * docked / runs.size(), 0) << " % | "
+     << sslbench::fmt(sslbench::percentile(rms, 50.), 3) << " | " << sslbench::fmt(sslbench::percentile(rms, 90.), 3)
+     << " | " << nbRms << " | " << sslbench::fmt(sslbench::percentile(ttd, 50.), 1) << " | "
+     << sslbench::fmt(sslbench::percentile(ttd, 90.), 1) << " | "
+     << sslbench::fmt(sslbench::percentile(detection, 50.), 1) << " | " << nbDetected << "/" << runs.size() << " | "
+     << collisions << " | " << lost << " |\n";
+  return os.str();
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Options opt;
+  try {
+    bool help = false;
+    opt = parse(argc, argv, help);
+    if (help) {
+      std::cout << kUsage;
+      return EXIT_SUCCESS;
+    }
+  } catch (const UsageError &e) {
+    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.message << std::endl;
+    return 2;
+  }
+
+  try {
+    if (!vpIoTools::checkDirectory(opt.outputDir)) {
+      vpIoTools::makeDirectory(opt.outputDir);
+    }
+    const vpCameraParameters cam = sslservo::scaledCamera(opt.width, opt.height);
+
+    // Jobs: run-major, so that with several threads the methods of one run progress together.
+    std::vector<Draw> draws;
+    for (int i = 0; i < opt.runs; ++i) {
+      draws.push_back(makeDraw(opt.seed, i, opt.maxCurrent));
+    }
+    const size_t nbMethods = opt.methods.size();
+    const size_t nbJobs = draws.size() * nbMethods;
+    std::vector<Result> results(nbJobs);
+    std::vector<std::string> errors(nbJobs);
+    std::atomic<size_t> next(0), done(0);
+    std::mutex printMutex;
+    const auto start = std::chrono::steady_clock::now();
+    auto worker = [&](bool alone) {
+#ifdef _OPENMP
+      // The renderer and the water model are OpenMP loops: with several runs in parallel, one OpenMP thread per
+      // run keeps the cores busy without oversubscribing them.
+      if (!alone) {
+        omp_set_num_threads(1);
+      }
+#else
+      (void)alone;
+#endif
+      for (size_t j = next++; j < nbJobs; j = next++) {
+        const Draw &d = draws[j / nbMethods];
+        const sslservo::Method m = opt.methods[j % nbMethods];
+        try {
+          results[j] = runOne(d, m, cam, opt);
+        } catch (const vpException &e) {
+          errors[j] = e.getStringMessage();
+        } catch (const std::exception &e) {
+          errors[j] = e.what();
+        }
+        const size_t n = ++done;
+        if (!opt.quiet) {
+          std::lock_guard<std::mutex> lock(printMutex);
+          const Result &r = results[j];
+          std::fprintf(stderr, "%zu/%zu run %d %s %s: %s, %.1f s wall\n", n, nbJobs, d.run,
+                       sslservo::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
+                       !errors[j].empty() ? "error"
+                       : r.docked         ? ("docked at " + num(r.timeToDock, 1) + " s").c_str()
+                                          : ("not docked, " + vpSSLHomingBehaviour::getStateName(r.finalState)).c_str(),
+                       r.wallTime);
+        }
+      }
+    };
+    const size_t nbThreads = std::min<size_t>(static_cast<size_t>(opt.threads), nbJobs);
+    if (nbThreads <= 1) {
+      worker(true);
+    } else {
+      std::vector<std::thread> pool;
+      for (size_t i = 0; i < nbThreads; ++i) {
+        pool.emplace_back(worker, false);
+      }
+      for (std::thread &t : pool) {
+        t.join();
+      }
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (size_t j = 0; j < nbJobs; ++j) {
+      if (!errors[j].empty()) {
+        throw vpException(vpException::fatalError, "run %d, method %s: %s", draws[j / nbMethods].run,
+                          sslservo::methodName(opt.methods[j % nbMethods]).c_str(), errors[j].c_str());
+      }
+    }
+
+    // runs.csv
+    const std::string csvPath = opt.outputDir + "/runs.csv";
+    std::ofstream csv(csvPath);
+    if (!csv) {
+      throw vpException(vpException::ioError, "%s: cannot write", csvPath.c_str());
+    }
+    csv << "run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,"
+           "stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,"
+           "collisions_outside_dock,lost_events,final_state,sim_time\n";
+    for (size_t j = 0; j < nbJobs; ++j) {
+      const Draw &d = draws[j / nbMethods];
+      const Result &r = results[j];
+      csv << d.run << ',' << sslservo::methodName(opt.methods[j % nbMethods]) << ','
+          << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << num(d.distance, 3) << ',' << num(d.lateral, 3)
+          << ',' << num(vpMath::deg(d.heading), 2) << ',' << num(d.depthOffset, 3) << ',' << num(d.currentSpeed, 3)
+          << ',' << num(vpMath::deg(d.currentDir), 1) << ',' << num(d.coastal ? 1.5 : 2.0, 1) << ','
+          << num(r.startRange, 3) << ',' << (r.docked ? 1 : 0) << ',' << num(r.timeToDock, 1) << ','
+          << num(r.standOffRms, 4) << ',' << r.settledSteps << ',' << num(r.firstDetection, 1) << ','
+          << r.collisionsOutsideDock << ',' << r.lostEvents << ',' << vpSSLHomingBehaviour::getStateName(r.finalState)
+          << ',' << num(r.simTime, 1) << '\n';
+    }
+    csv.close();
+    if (!csv) {
+      throw vpException(vpException::ioError, "%s: write failed", csvPath.c_str());
+    }
+
+    // summary.md
+    std::ostringstream md;
+    md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
+       << opt.height << ", time limit " << num(opt.timeLimit, 0) << " s, current up to " << num(opt.maxCurrent, 2)
+       << " m/s, auto-dock after 10 s at the stand-off\n\n";
+    md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
+          "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
+          "lost-target events |\n";
+    md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t m = 0; m < nbMethods; ++m) {
+      for (const char *water : {"all", "clear", "coastal"}) {
+        std::vector<const Result *> runs;
+        for (size_t i = 0; i < draws.size(); ++i) {
+          if (std::string(water) == "all" || (draws[i].coastal == (std::string(water) == "coastal"))) {
+            runs.push_back(&results[i * nbMethods + m]);
+          }
+        }
+        md << summaryLine(sslservo::methodName(opt.methods[m]), water, runs);
+      }
+    }
+    const std::string mdPath = opt.outputDir + "/summary.md";
+    std::ofstream mdFile(mdPath);
+    mdFile << md.str();
+    mdFile.close();
+    if (!mdFile) {
+      throw vpException(vpException::ioError, "%s: cannot write", mdPath.c_str());
+    }
+    std::cout << md.str();
+    double wall = 0.;
+    for (const Result &r : results) {
+      wall += r.wallTime;
+    }
+    std::printf("\n%zu runs in %.1f s with %zu thread(s): %.1f s per run on average -> %s, %s\n", nbJobs, elapsed,
+                std::max<size_t>(1, nbThreads), wall / std::max<size_t>(1, nbJobs), csvPath.c_str(), mdPath.c_str());
+  } catch (const vpException &e) {
+    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.getStringMessage() << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
