@@ -216,7 +216,7 @@ TEST(HomingBehaviour, TransitionsOnSyntheticInputs)
   EXPECT_EQ(b.getState(), SSL_HOMING_SEARCH);
   EXPECT_DOUBLE_EQ(v[SSL_AXIS_YAW], 0.2);
 
-  // Seen off-centre by 20 deg: align, by rotating only (pitch/yaw), no translation.
+  // Seen off-centre by 20 deg at the same depth: align, by turning, without surge (the range is kept).
   v = b.update(0.1, facing(2., 20.), 1.5, false);
   EXPECT_EQ(b.getState(), SSL_HOMING_ALIGN);
   EXPECT_EQ(v[SSL_AXIS_SURGE], 0.);
@@ -406,6 +406,46 @@ TEST(HomingBehaviour, ApplyDrivesAVpRobotInTheChosenFrame)
   EXPECT_NO_THROW(b.apply(robot, vpRobot::ARTICULAR_FRAME));
 }
 
+TEST(HomingBehaviour, AlignTimeoutHandsTheCentringToTheFullLaw)
+{
+  // A cross current holds the target 12 deg off-centre: ALIGN cannot finish; after its timeout HOME takes over
+  // (with surge), which it would never do with an infinite timeout.
+  for (double timeout : {5., std::numeric_limits<double>::infinity()}) {
+    vpSSLHomingBehaviour b = makeBehaviour(vpSSLServoLaw::forwardCameraMount(0.5));
+    b.setAlignTimeout(timeout);
+    vpColVector v;
+    double t = 0.;
+    for (; t < 4.9; t += 0.1) {
+      v = b.update(t, facing(3., 12.), 1.5, false);
+      ASSERT_EQ(b.getState(), SSL_HOMING_ALIGN) << "t " << t;
+      EXPECT_EQ(v[SSL_AXIS_SURGE], 0.);
+    }
+    for (; t < 10.; t += 0.1) {
+      v = b.update(t, facing(3., 12.), 1.5, false);
+    }
+    if (std::isfinite(timeout)) {
+      EXPECT_EQ(b.getState(), SSL_HOMING_HOME);
+      EXPECT_GT(v[SSL_AXIS_SURGE], 0.); // 3 m: towards the 2 m stand-off
+    } else {
+      EXPECT_EQ(b.getState(), SSL_HOMING_ALIGN);
+    }
+  }
+}
+
+TEST(HomingBehaviour, AutoDockCentringToleranceIsItsOwn)
+{
+  // At the stand-off but 10 deg off-centre (a current): the default 5 deg hold never docks, a 15 deg one does.
+  for (double deg : {5., 15.}) {
+    vpSSLHomingBehaviour b = makeBehaviour(vpSSLServoLaw::forwardCameraMount(0.5));
+    b.setAlignTimeout(0.);
+    b.setAutoDock(2., 0.5, vpMath::rad(deg));
+    for (double t = 0.; t < 4.; t += 0.1) {
+      b.update(t, facing(2.1, 10.), 1.5, false);
+    }
+    EXPECT_EQ(b.getState(), deg > 10. ? SSL_HOMING_DOCK : SSL_HOMING_HOME) << deg << " deg";
+  }
+}
+
 TEST(HomingBehaviour, SettersRejectBadValues)
 {
   vpSSLHomingBehaviour b;
@@ -418,5 +458,8 @@ TEST(HomingBehaviour, SettersRejectBadValues)
   EXPECT_THROW(b.setMinPoints(0), vpException);
   EXPECT_THROW(b.setBlindDock(-1., 0.1), vpException);
   EXPECT_THROW(b.setAutoDock(1., 0.), vpException);
+  EXPECT_THROW(b.setAutoDock(1., 0.1, 0.), vpException);
+  EXPECT_THROW(b.setAlignTimeout(-1.), vpException);
+  EXPECT_THROW(b.setAlignTimeout(kNaN), vpException);
   EXPECT_EQ(vpSSLHomingBehaviour::getStateName(SSL_HOMING_DOCKED), "docked");
 }

@@ -90,6 +90,8 @@ struct Scene
   vpTranslationVector current;  //!< Constant water current (world frame, m/s).
   double standOff = 2.;         //!< Stand-off held in HOME (m).
   double autoDockHold = -1.;    //!< Auto dock after this long at the stand-off (s); < 0: never.
+  double autoDockRange = 0.1;   //!< Range tolerance of the auto-dock hold (m), see setAutoDock().
+  double autoDockAngle = 5.;    //!< Centring tolerance of the auto-dock hold (deg), see setAutoDock().
   double blindDockRange = 1.3;  //!< See vpSSLHomingBehaviour::setBlindDock().
   double blindDockSpeed = 0.15; //!< See vpSSLHomingBehaviour::setBlindDock().
   double timeStep = 0.2;        //!< Control period (s): vision at 5 Hz, dynamics sub-stepped inside.
@@ -202,7 +204,7 @@ public:
     m_homing.getServoLaw().setCameraToVehicle(m_auv.getCameraToVehicle());
     m_homing.setStandOff(scene.standOff);
     if (scene.autoDockHold >= 0.) {
-      m_homing.setAutoDock(scene.autoDockHold);
+      m_homing.setAutoDock(scene.autoDockHold, scene.autoDockRange, vpMath::rad(scene.autoDockAngle));
     }
     // The 0.3 m ssl3-a3 pattern overflows the image within about 1.2 m (0.6 m for the behaviour's default): from
     // there the approach is blind, holding the last surge.

@@ -20,10 +20,11 @@ double clamp(double v, double limit)
 vpSSLHomingBehaviour::vpSSLHomingBehaviour()
     : m_law(), m_standOff(2.), m_searchYawRate(0.2), m_searchDepthMin(1.), m_searchDepthMax(3.), m_searchPeriod(40.),
       m_searchDepthGain(0.5), m_alignTolerance(vpMath::rad(5.)), m_lostTimeout(3.), m_minPoints(1), m_autoDockHold(-1.),
-      m_autoDockRangeTolerance(0.1), m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_state(SSL_HOMING_SEARCH),
-      m_dockRequested(false), m_started(false), m_time(0.), m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN),
-      m_seen(false), m_lastCollision(false), m_nbCollisions(0), m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.),
-      m_searchDepth(kNaN), m_velocity(6, 0.), m_cameraVelocity(6, 0.)
+      m_autoDockRangeTolerance(0.1), m_autoDockAngleTolerance(vpMath::rad(5.)), m_alignTimeout(5.),
+      m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_state(SSL_HOMING_SEARCH), m_dockRequested(false),
+      m_started(false), m_time(0.), m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN), m_seen(false),
+      m_lastCollision(false), m_nbCollisions(0), m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.), m_searchDepth(kNaN),
+      m_velocity(6, 0.), m_cameraVelocity(6, 0.)
 {
   m_law.setStandOff(m_standOff);
 }
@@ -65,6 +66,14 @@ void vpSSLHomingBehaviour::setAlignTolerance(double angle)
   m_alignTolerance = angle;
 }
 
+void vpSSLHomingBehaviour::setAlignTimeout(double seconds)
+{
+  if (!(seconds >= 0.)) {
+    throw vpException(vpException::badValue, "vpSSLHomingBehaviour::setAlignTimeout: seconds: %g is not >= 0", seconds);
+  }
+  m_alignTimeout = seconds;
+}
+
 void vpSSLHomingBehaviour::setLostTimeout(double seconds)
 {
   if (!std::isfinite(seconds) || seconds < 0.) {
@@ -82,16 +91,18 @@ void vpSSLHomingBehaviour::setMinPoints(unsigned int n)
   m_minPoints = n;
 }
 
-void vpSSLHomingBehaviour::setAutoDock(double holdSeconds, double rangeTolerance)
+void vpSSLHomingBehaviour::setAutoDock(double holdSeconds, double rangeTolerance, double angleTolerance)
 {
-  if (!std::isfinite(holdSeconds) || !std::isfinite(rangeTolerance) || !(rangeTolerance > 0.)) {
+  if (!std::isfinite(holdSeconds) || !std::isfinite(rangeTolerance) || !(rangeTolerance > 0.) ||
+      !std::isfinite(angleTolerance) || !(angleTolerance > 0.)) {
     throw vpException(vpException::badValue,
-                      "vpSSLHomingBehaviour::setAutoDock: holdSeconds %g, rangeTolerance %g: need finite values "
-                      "and rangeTolerance > 0",
-                      holdSeconds, rangeTolerance);
+                      "vpSSLHomingBehaviour::setAutoDock: holdSeconds %g, rangeTolerance %g, angleTolerance %g: need "
+                      "finite values and tolerances > 0",
+                      holdSeconds, rangeTolerance, angleTolerance);
   }
   m_autoDockHold = holdSeconds;
   m_autoDockRangeTolerance = rangeTolerance;
+  m_autoDockAngleTolerance = angleTolerance;
 }
 
 void vpSSLHomingBehaviour::setBlindDock(double range, double minSpeed)
@@ -222,7 +233,9 @@ vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input,
     case SSL_HOMING_ALIGN:
       if (lostTooLong) {
         setState(SSL_HOMING_SEARCH);
-      } else if (m_seen && centreAngle < m_alignTolerance) {
+      } else if (m_seen && (centreAngle < m_alignTolerance || getTimeInState() >= m_alignTimeout)) {
+        // After the timeout the full law takes over the centring: a cross current can hold the target off-centre
+        // beyond the tolerance while the vehicle drifts away with the range uncontrolled.
         setState(m_dockRequested ? SSL_HOMING_DOCK : SSL_HOMING_HOME);
       }
       break;
@@ -269,7 +282,7 @@ vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input,
       m_law.setStandOff(m_standOff);
       v = m_law.computeControlLaw(input);
       const bool holding = m_seen && std::fabs(Zc - m_standOff) < m_autoDockRangeTolerance &&
-                           centreAngle < m_alignTolerance && m_law.getStatus() == SSL_SERVO_OK;
+                           centreAngle < m_autoDockAngleTolerance && m_law.getStatus() == SSL_SERVO_OK;
       if (m_autoDockHold >= 0. && holding) {
         if (!std::isfinite(m_holdStart)) {
           m_holdStart = m_time;

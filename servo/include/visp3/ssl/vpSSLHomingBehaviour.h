@@ -40,8 +40,9 @@ enum vpSSLHomingState
   (nbPoints). Transitions, evaluated in update():
   - SEARCH: seen -> ALIGN. Command: yaw rate setSearchPattern() and heave tracking a depth that oscillates
     between the pattern's two depths (triangle wave), so that a target above or below is swept.
-  - ALIGN: the target centre within setAlignTolerance() of the optical axis -> HOME (-> DOCK if docking was
-    requested). Command: vpSSLServoLaw::computeCentringLaw() (heave, pitch and yaw; no surge).
+  - ALIGN: the target centre within setAlignTolerance() of the optical axis, or setAlignTimeout() seconds in
+    ALIGN with the target seen -> HOME (-> DOCK if docking was requested). Command: vpSSLServoLaw::computeCentringLaw()
+  (heave, pitch and yaw; no surge).
   - HOME: docking requested (startDocking(), or setAutoDock() after holding the stand-off) -> DOCK. Command:
     vpSSLServoLaw::computeControlLaw() at the stand-off.
   - DOCK: collision -> DOCKED. Command: the servo law with stand-off 0. When the target is lost within
@@ -93,15 +94,25 @@ public:
   void setSearchPattern(double yawRate, double depthMin, double depthMax, double period, double depthGain = 0.5);
   //! Angle between the optical axis and the target centre below which ALIGN ends (rad, default 5 deg).
   void setAlignTolerance(double angle);
+  /*!
+    Time in ALIGN after which the full law takes over even if the target is not centred (s, >= 0, may be
+    infinite; default 5). A cross current the vehicle cannot counter without sway holds the target off-centre;
+    ALIGN, which does not drive the range, would let the vehicle drift away.
+  */
+  void setAlignTimeout(double seconds);
   //! Time without the target after which ALIGN, HOME or DOCK fall back to SEARCH (s, >= 0, default 3).
   void setLostTimeout(double seconds);
   //! Measured points (input nbPoints) needed for the target to count as seen (>= 1, default 1).
   void setMinPoints(unsigned int n);
   /*!
     Automatic docking: after \e holdSeconds in HOME with the range within \e rangeTolerance (m) of the
-    stand-off and the centre within the align tolerance, HOME -> DOCK. holdSeconds < 0 disables it (default).
+    stand-off and the target centre within \e angleTolerance (rad) of the optical axis, HOME -> DOCK.
+    holdSeconds < 0 disables it (default). In a cross current an under-actuated vehicle cannot hold the
+    stand-off (it weathervanes round the target): wider tolerances and a short hold let it dock before it drifts
+    off the target's axis (doc/servo-simulation.md, Monte Carlo).
+    \exception vpException if a value is not finite or a tolerance is not > 0.
   */
-  void setAutoDock(double holdSeconds, double rangeTolerance = 0.1);
+  void setAutoDock(double holdSeconds, double rangeTolerance = 0.1, double angleTolerance = 5. * M_PI / 180.);
   //! Blind final approach: range (m) below which a lost target in DOCK keeps the surge, and its minimum speed.
   void setBlindDock(double range, double minSpeed);
   //! Requests docking: HOME -> DOCK at the next update() (ALIGN -> DOCK directly once aligned).
@@ -170,6 +181,8 @@ private:
   unsigned int m_minPoints;
   double m_autoDockHold;
   double m_autoDockRangeTolerance;
+  double m_autoDockAngleTolerance;
+  double m_alignTimeout;
   double m_blindDockRange;
   double m_blindDockSpeed;
 
