@@ -128,6 +128,7 @@ inline Scene paperScene(const std::string &scenario, double duration)
 struct Row
 {
   double t, nbPoints, estRange, trueRange, yawDemand, yawRate, heading, depth, lateral, targetY, collision;
+  double yRelEst, yRelTrue; //!< Target centre's y (starboard) in the vehicle frame: measured, and true (m).
   vpSSLHomingState state;
   bool seen; //!< The behaviour saw the target at this step (vpSSLHomingBehaviour::getTargetSeen()).
 };
@@ -161,12 +162,12 @@ inline void writeRows(const std::string &path, const std::vector<Row> &rows)
   }
   auto num = [](double x, int digits) { return std::isfinite(x) ? sslbench::fmt(x, digits) : std::string(); };
   csv << "t,state,nb_points,est_range,true_range,yaw_rate_demand,yaw_rate,heading_deg,depth,lateral,target_y,"
-         "collision\n";
+         "collision,y_rel_est,y_rel_true\n";
   for (const Row &r : rows) {
     csv << num(r.t, 2) << ',' << vpSSLHomingBehaviour::getStateName(r.state) << ',' << num(r.nbPoints, 0) << ','
         << num(r.estRange, 4) << ',' << num(r.trueRange, 4) << ',' << num(r.yawDemand, 4) << ',' << num(r.yawRate, 4)
         << ',' << num(r.heading, 2) << ',' << num(r.depth, 4) << ',' << num(r.lateral, 4) << ',' << num(r.targetY, 4)
-        << ',' << num(r.collision, 0) << '\n';
+        << ',' << num(r.collision, 0) << ',' << num(r.yRelEst, 4) << ',' << num(r.yRelTrue, 4) << '\n';
   }
   csv.close();
   if (!csv) {
@@ -298,6 +299,19 @@ public:
     r.lateral = m_auv.get_wMv()[1][3] - wMo[1][3];
     r.targetY = wMo[1][3] - m_scene.wMoHome[1][3];
     r.collision = m_auv.getCollision() ? 1. : 0.;
+    // The paper's Fig. 8 quantity: where the target centre is relative to the vehicle, as measured and truly (the
+    // same object point, the mean of the measured ones, at the true pose).
+    r.yRelEst = r.yRelTrue = std::numeric_limits<double>::quiet_NaN();
+    double xc, yc, Zc;
+    if (vpSSLServoLaw::getTargetCentre(input, xc, yc, Zc)) {
+      const vpHomogeneousMatrix vMc = m_auv.getCameraToVehicle();
+      r.yRelEst = (vMc * vpTranslationVector(xc * Zc, yc * Zc, Zc))[1];
+      vpTranslationVector o;
+      for (const vpSSLServoPoint &p : input.points) {
+        o = o + vpTranslationVector(p.oX, p.oY, p.oZ) * (1. / static_cast<double>(input.points.size()));
+      }
+      r.yRelTrue = ((vMc * cMo) * o)[1];
+    }
     return r;
   }
 

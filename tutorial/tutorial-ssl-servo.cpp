@@ -38,7 +38,8 @@ Options:
   --quiet              No progress on stderr.
   --help               This help.
 CSV columns: t, state, nb_points, est_range, true_range, yaw_rate_demand, yaw_rate, heading_deg, depth,
-lateral (vehicle y minus target y, m), target_y, collision.
+lateral (vehicle y minus target y, world, m), target_y, collision, y_rel_est and y_rel_true (target centre's
+starboard position in the vehicle frame, measured and true, m; empty when the target is not measured).
 )";
 
 struct Options
@@ -255,9 +256,11 @@ int main(int argc, char **argv)
       rng.addHorizontalLine(standOff, "stand-off");
       panels = {yaw, depth, state, nb, rng};
     } else if (opt.scenario == "fig8") {
-      vpSSLPlot lat = panel("Lateral position (" + what + ")", "y (m)");
-      lat.addSeries("vehicle - target", ts, column(&Row::lateral));
-      lat.addSeries("target moved", ts, column(&Row::targetY), vpColor::red);
+      // As the paper's Fig. 8: the target's lateral position in the vehicle frame, which the yaw brings back to 0.
+      vpSSLPlot lat = panel("Target lateral position in the vehicle frame (" + what + ")", "y_rel (m)");
+      lat.addSeries("measured", ts, column(&Row::yRelEst));
+      lat.addSeries("true", ts, column(&Row::yRelTrue), vpColor::red);
+      lat.addSeries("target moved (world)", ts, column(&Row::targetY), vpColor::darkGreen);
       vpSSLPlot heading = panel("Heading", "deg");
       heading.addSeries("heading", ts, column(&Row::heading));
       vpSSLPlot yaw = panel("Yaw rate", "rad/s");
