@@ -61,8 +61,15 @@ void vpSSLBrightnessNormalizer::computeLut(const vpImage<unsigned char> &I, unsi
         ++hist4[3][row[u + 3]];
       }
     }
-    for (unsigned int k = 0; u < W; u += step, ++k) {
-      ++hist4[k & 3][row[u]];
+    // Sparse rows: four samples per iteration, one per histogram.
+    for (; u + 3 * step < W; u += 4 * step) {
+      ++hist4[0][row[u]];
+      ++hist4[1][row[u + step]];
+      ++hist4[2][row[u + 2 * step]];
+      ++hist4[3][row[u + 3 * step]];
+    }
+    for (; u < W; u += step) {
+      ++hist4[0][row[u]];
     }
   }
   unsigned int hist[256];
@@ -94,7 +101,10 @@ void vpSSLBrightnessNormalizer::computeLut(const vpImage<unsigned char> &I, unsi
     offset = 0.5 * (lo + hi) - 127.5 / gain;
   }
   for (int g = 0; g < 256; ++g) {
-    const double value = std::round((g - offset) * gain);
+    // std::round() (half away from zero) without its library call: x - floor(x) is exact, and below 0 both
+    // clamp to 0.
+    const double x = (g - offset) * gain, f = std::floor(x);
+    const double value = x - f >= 0.5 ? f + 1. : f;
     lut[g] = static_cast<unsigned char>(std::min(255., std::max(0., value)));
   }
 }

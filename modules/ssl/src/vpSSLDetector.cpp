@@ -178,6 +178,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   // of interest is normalised exactly as in a full-frame search, and only the pixels matched are decimated.
   const bool coarse = m_decimation == 2 && !m_upsample && I.getWidth() >= 2 && I.getHeight() >= 2;
   const vpImage<unsigned char> *In = raw;
+  // Whether only some pixels of the normalised image are up to date (m_lut holds the table then).
+  bool partialNormalization = false;
   int maxValue = 0;
   if (coarse) {
     const unsigned char *lut = nullptr;
@@ -215,8 +217,9 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     m_times.normalization = elapsedMs(t);
     if (rois->empty()) {
       m_matchCoarse.compute(m_decimated, m_map);
+      m_mapAllWritten = true;
     } else {
-      m_matchCoarse.compute(m_decimated, *rois, m_map);
+      matchRegions(m_matchCoarse, m_decimated, *rois);
     }
     m_times.matching = elapsedMs(t);
     maxValue = m_matchCoarse.getMaxValue();
@@ -239,16 +242,42 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       rois = &m_scaledRois;
     }
     In = raw;
-    if (m_normalize) {
+    if (m_normalize && rois->empty()) {
       m_normalizer.apply(*raw, m_normalized);
       In = &m_normalized;
+    } else if (m_normalize) {
+      // Tracking frame: the table of the whole image (the same as a full search's), applied only to the pixels the
+      // matching of the regions reads (each grown by the window); the Eq. 7 sweep normalises the row it reads.
+      m_normalizer.computeLut(*raw, m_lut, 1);
+      m_normalized.resize(raw->getHeight(), raw->getWidth());
+      const int W = static_cast<int>(raw->getWidth()), H = static_cast<int>(raw->getHeight());
+      const int w = static_cast<int>(m_match.getWindow());
+      for (const vpRect &r : *rois) {
+        const double u0 = std::max(0., std::floor(r.getLeft()) - w - 1),
+                     v0 = std::max(0., std::floor(r.getTop()) - w - 1);
+        const double u1 = std::min<double>(W, std::ceil(r.getRight()) + w + 2);
+        const double v1 = std::min<double>(H, std::ceil(r.getBottom()) + w + 2);
+        if (!(std::isfinite(u0) && std::isfinite(v0) && std::isfinite(u1) && std::isfinite(v1) && u0 < u1 && v0 < v1)) {
+          continue;
+        }
+        for (int v = static_cast<int>(v0); v < static_cast<int>(v1); ++v) {
+          const unsigned char *src = (*raw)[v];
+          unsigned char *dst = m_normalized[v];
+          for (int u = static_cast<int>(u0); u < static_cast<int>(u1); ++u) {
+            dst[u] = m_lut[src[u]];
+          }
+        }
+      }
+      In = &m_normalized;
+      partialNormalization = true;
     }
     m_times.normalization = elapsedMs(t);
 
     if (rois->empty()) {
       m_match.compute(*In, m_map);
+      m_mapAllWritten = true;
     } else {
-      m_match.compute(*In, *rois, m_map);
+      matchRegions(m_match, *In, *rois);
     }
     m_times.matching = elapsedMs(t);
 
@@ -332,20 +361,21 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
         scaled.radius *= 2.;
         scaled.minorRadius *= 2.;
       }
-      // The symmetry centring of the re-reading absorbs the few pixels a plain climb may stop short of the
-      // best maximum: no grid search for it.
+      // With decimation the re-reading starts from the decimated peak itself: it lies within a pixel or two of the
+      // centre, which the symmetry centring of the re-reading searches +-3 px around, so the climb to the
+      // full-resolution maximum is not needed (it was a tenth of a tracking frame). The score is then the
+      // full-resolution map at the centre read, one evaluation of Eq. 5.
       vpSSLLandmark tracked = l;
-      vpSSLPeak fine = peak;
-      if (!coarse || refinePeak(I, fine, false)) {
-        if (coarse) {
-          tracked.u = fine.u;
-          tracked.v = fine.v;
-          tracked.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
-        }
-        read = m_radiusEstimator.estimate(*raw, tracked, scaled);
-        if (read) {
-          l = tracked;
-        }
+      read = m_radiusEstimator.estimate(*raw, tracked, scaled);
+      if (read && coarse) {
+        const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+        const int cu = std::min(W - 1, std::max(0, static_cast<int>(std::lround(tracked.u))));
+        const int cv = std::min(H - 1, std::max(0, static_cast<int>(std::lround(tracked.v))));
+        tracked.score =
+            std::max(0., std::min(1., static_cast<double>(fullResolutionMatch(I, cu, cv)) / m_match.getMaxValue()));
+      }
+      if (read) {
+        l = tracked;
       }
     }
     if (!read) {
@@ -366,19 +396,19 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
     const int su = static_cast<int>(std::lround(l.u)), sv = static_cast<int>(std::lround(l.v));
     const unsigned int maxWindow = static_cast<unsigned int>(1.5 * scale * m_maxRadius);
-    if (coarse) {
+    if (coarse || partialNormalization) {
       // The sweep runs along +x on the normalised row of the centre: only that row is normalised.
-      const int W = static_cast<int>(I.getWidth());
-      m_sweepRow.resize(1, I.getWidth());
-      if (sv >= 0 && sv < static_cast<int>(I.getHeight())) {
-        const unsigned char *src = I[sv];
+      const int W = static_cast<int>(raw->getWidth());
+      m_sweepRow.resize(1, raw->getWidth());
+      if (sv >= 0 && sv < static_cast<int>(raw->getHeight())) {
+        const unsigned char *src = (*raw)[sv];
         unsigned char *dst = m_sweepRow[0];
         for (int u = std::max(0, su); u < W; ++u) {
           dst[u] = m_lut[src[u]];
         }
       }
       l.radiusEq7 = vpSSLRadiusEstimator::sweep(
-          m_sweepRow, m_match, su, sv >= 0 && sv < static_cast<int>(I.getHeight()) ? 0 : -1, maxWindow, m_sweep);
+          m_sweepRow, m_match, su, sv >= 0 && sv < static_cast<int>(raw->getHeight()) ? 0 : -1, maxWindow, m_sweep);
     } else {
       l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, su, sv, maxWindow, m_sweep);
     }
@@ -441,6 +471,34 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   return !m_landmarks.empty();
 }
 
+void vpSSLDetector::matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
+                                 const std::vector<vpRect> &rois)
+{
+  // The map must be zero outside the regions (getMatchingMap()). Clearing it all at every tracking frame cost as
+  // much as matching the regions of a decimated frame: only what the last call wrote is cleared (the boxes
+  // vpSSLMatchingFunction writes: each rectangle's pixels, clipped to the image).
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  if (m_mapAllWritten || m_map.getWidth() != I.getWidth() || m_map.getHeight() != I.getHeight()) {
+    m_map.resize(I.getHeight(), I.getWidth());
+    std::fill(m_map.bitmap, m_map.bitmap + m_map.getSize(), 0);
+  } else {
+    for (const vpRect &r : m_mapWritten) {
+      const double u0 = std::ceil(std::max(0., r.getLeft())), v0 = std::ceil(std::max(0., r.getTop()));
+      const double u1 = std::floor(std::min(W - 1., r.getRight())), v1 = std::floor(std::min(H - 1., r.getBottom()));
+      if (!(u0 <= u1 && v0 <= v1)) {
+        continue; // outside the image: nothing was written
+      }
+      for (int v = static_cast<int>(v0); v <= static_cast<int>(v1); ++v) {
+        std::fill(m_map[v] + static_cast<int>(u0), m_map[v] + static_cast<int>(u1) + 1, 0);
+      }
+    }
+  }
+  m_mapAllWritten = true; // until computeInside() has returned (it throws on a non-finite rectangle)
+  match.computeInside(I, rois, m_map);
+  m_mapWritten.assign(rois.begin(), rois.end());
+  m_mapAllWritten = false;
+}
+
 int vpSSLDetector::fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const
 {
   // Eq. 5 at one pixel on the normalised image (through the table), exactly as the full-resolution map.
@@ -467,6 +525,66 @@ int vpSSLDetector::fullResolutionMatch(const vpImage<unsigned char> &I, int u, i
   return best;
 }
 
+void vpSSLDetector::normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach)
+{
+  // The pixels Eq. 5 reads for every centre within reach of (u0, v0): rows v0 +- reach over the columns the
+  // horizontal directions read, and columns u0 +- reach over the rows the vertical ones read (stored column by
+  // column, so that a vertical sum reads contiguous bytes), through the normalisation table.
+  const int w = static_cast<int>(m_match.getWindow());
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  m_crossU0 = std::max(0, u0 - reach - w);
+  m_crossV0 = std::max(0, v0 - reach);
+  m_crossW = std::min(W, u0 + reach + w + 1) - m_crossU0;
+  const int rows = std::min(H, v0 + reach + 1) - m_crossV0;
+  m_crossRows.resize(static_cast<size_t>(std::max(0, rows) * std::max(0, m_crossW)));
+  for (int y = 0; y < rows; ++y) {
+    const unsigned char *src = I[m_crossV0 + y] + m_crossU0;
+    unsigned char *dst = m_crossRows.data() + static_cast<size_t>(y) * m_crossW;
+    for (int x = 0; x < m_crossW; ++x) {
+      dst[x] = m_lut[src[x]];
+    }
+  }
+  m_crossCu0 = std::max(0, u0 - reach);
+  m_crossCv0 = std::max(0, v0 - reach - w);
+  m_crossH = std::min(H, v0 + reach + w + 1) - m_crossCv0;
+  const int cols = std::min(W, u0 + reach + 1) - m_crossCu0;
+  m_crossCols.resize(static_cast<size_t>(std::max(0, cols) * std::max(0, m_crossH)));
+  for (int y = 0; y < m_crossH; ++y) {
+    const unsigned char *src = I[m_crossCv0 + y] + m_crossCu0;
+    for (int x = 0; x < cols; ++x) {
+      m_crossCols[static_cast<size_t>(x) * m_crossH + y] = m_lut[src[x]];
+    }
+  }
+}
+
+int vpSSLDetector::crossMatch(int u, int v) const
+{
+  // fullResolutionMatch() on the copies of normalizeCross(): the same integers, without a table look-up per sample.
+  const int w = static_cast<int>(m_match.getWindow());
+  const bool valid[4] = {u + w < m_imageW, u >= w, v + w < m_imageH, v >= w};
+  const unsigned char *row =
+      m_crossRows.data() + static_cast<std::ptrdiff_t>(v - m_crossV0) * m_crossW + (u - m_crossU0);
+  const unsigned char *col =
+      m_crossCols.data() + static_cast<std::ptrdiff_t>(u - m_crossCu0) * m_crossH + (v - m_crossCv0);
+  bool any = false;
+  int best = 0;
+  for (int d = 0; d < 4; ++d) {
+    if (!valid[d]) {
+      continue;
+    }
+    const unsigned char *p = d < 2 ? row : col;
+    const int step = (d & 1) == 0 ? 1 : -1;
+    int sum = 0;
+    for (int xi = 1; xi <= w; ++xi) {
+      const int c = p[xi * step], a = p[m_offsetA[xi] * step], b = p[m_offsetB[xi] * step];
+      sum += std::abs(c - a) - std::abs(c - b);
+    }
+    best = any ? std::max(best, sum) : sum;
+    any = true;
+  }
+  return best;
+}
+
 bool vpSSLDetector::refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid)
 {
   // Hill climbing on the full-resolution map from the decimated peak, each value computed once.
@@ -476,10 +594,14 @@ bool vpSSLDetector::refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak,
   std::fill(cache, cache + kSize * kSize, std::numeric_limits<int>::min());
   const int u0 = std::min(W - 1, std::max(0, static_cast<int>(std::lround(peak.u))));
   const int v0 = std::min(H - 1, std::max(0, static_cast<int>(std::lround(peak.v))));
+  // Up to a few dozen evaluations within kReach: the pixels they read are normalised once.
+  m_imageW = W;
+  m_imageH = H;
+  normalizeCross(I, u0, v0, kReach);
   auto M = [&](int u, int v) {
     int &m = cache[(v - v0 + kReach) * kSize + (u - u0 + kReach)];
     if (m == std::numeric_limits<int>::min()) {
-      m = fullResolutionMatch(I, u, v);
+      m = crossMatch(u, v);
     }
     return m;
   };

@@ -120,7 +120,8 @@ void mergeRows(Scratch &s, int W, int H, int grow)
   (the box grown by w, clipped) are copied into the padded image first; overlapping boxes are merged row by row
   so that every pixel is computed once.
 */
-void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImage<int> &M, Scratch &s)
+void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImage<int> &M, Scratch &s,
+         bool clearOutside = true)
 {
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   const int w = static_cast<int>(f.getWindow());
@@ -171,7 +172,7 @@ void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImag
       }
     }
   }
-  for (int v = 0; v < H; ++v) {
+  for (int v = 0; v < H && clearOutside; ++v) {
     int u = 0;
     for (int k = s.rowFirst[v]; k < s.rowFirst[v + 1]; ++k) {
       if (s.intervals[k].u0 > u) {
@@ -238,6 +239,22 @@ void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, vpImage<int
 void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
                                     vpImage<int> &M) const
 {
+  computeRegions(I, rois, M, true);
+}
+
+void vpSSLMatchingFunction::computeInside(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
+                                          vpImage<int> &M) const
+{
+  if (M.getHeight() != I.getHeight() || M.getWidth() != I.getWidth()) {
+    M.resize(I.getHeight(), I.getWidth());
+    std::fill(M.bitmap, M.bitmap + M.getSize(), 0);
+  }
+  computeRegions(I, rois, M, false);
+}
+
+void vpSSLMatchingFunction::computeRegions(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
+                                           vpImage<int> &M, bool clearOutside) const
+{
   M.resize(I.getHeight(), I.getWidth());
   if (I.getSize() == 0) {
     return;
@@ -260,7 +277,7 @@ void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, const std::
           {static_cast<int>(u0), static_cast<int>(v0), static_cast<int>(u1) + 1, static_cast<int>(v1) + 1});
     }
   }
-  run(*this, I, M, s);
+  run(*this, I, M, s, clearOutside);
 }
 
 std::string vpSSLMatchingFunction::getSimdTarget()

@@ -59,7 +59,8 @@ inline float bilinear(const vpImage<unsigned char> &I, double u, double v)
 } // namespace
 
 vpSSLRadiusEstimator::vpSSLRadiusEstimator()
-    : m_minRadius(4.), m_maxRadius(300.), m_minDirections(6), m_p(0.5), m_step(0.5), m_pixelScale(1.)
+    : m_minRadius(4.), m_maxRadius(300.), m_minDirections(6), m_p(0.5), m_q(std::sqrt(0.5)), m_step(0.5),
+      m_pixelScale(1.)
 {
 }
 
@@ -95,6 +96,7 @@ void vpSSLRadiusEstimator::setP(double p)
     throw vpException(vpException::badValue, "vpSSLRadiusEstimator: p = %g not in (0, 1)", p);
   }
   m_p = p;
+  m_q = std::sqrt(p);
 }
 
 bool vpSSLRadiusEstimator::readRays(const vpImage<unsigned char> &I, double u, double v, double maxRadius)
@@ -136,6 +138,7 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
     m_rayRead[d] = true;
     P.clear();
     C.assign(1, 0.);
+    m_mean3[d].clear();
     size_t lo = 0, hi = static_cast<size_t>(m_rayMaxRadius / m_step) + 2; // inside(lo), !inside(hi)
     while (hi - lo > 1) {
       const size_t mid = (lo + hi) / 2;
@@ -146,13 +149,41 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
   // Only the samples out to upTo (and two beyond, for interpolation) are read: the centre refinement
   // re-reads the rays near the landmark's radius only, and most candidates are given up on early.
   const size_t want = std::min(m_raySamples[d], static_cast<size_t>(std::max(0., upTo / m_step)) + 3);
-  for (size_t i = P.size(); i < want; ++i) {
+  const size_t have = P.size();
+  if (want <= have) {
+    return;
+  }
+  // Storage only grows (no allocation once the longest ray has been read); plain stores rather than push_back.
+  P.resize(want);
+  C.resize(std::max<size_t>(1, want));
+  float *p = P.data();
+  double *c = C.data();
+  const unsigned char *bitmap = I.bitmap;
+  const int width = static_cast<int>(I.getWidth()), lastU = width - 1, lastV = static_cast<int>(I.getHeight()) - 1;
+  const double cd = kCos[d], sd = kSin[d], halfStep = 0.5 * m_step;
+  // The running integral and the previous sample are carried in variables rather than read back from the vectors
+  // (the same operations in the same order: the same values).
+  double integral = c[have > 0 ? have - 1 : 0];
+  float previous = have > 0 ? p[have - 1] : 0.f;
+  for (size_t i = have; i < want; ++i) {
     const double rho = static_cast<double>(i) * m_step;
-    P.push_back(bilinear(I, u + rho * kCos[d], v + rho * kSin[d]));
+    // bilinear(), with the row pointers computed rather than looked up.
+    const double x = u + rho * cd, y = v + rho * sd;
+    const int u0 = static_cast<int>(x), v0 = static_cast<int>(y);
+    const double fu = x - u0, fv = y - v0;
+    const int u1 = std::min(u0 + 1, lastU), v1 = std::min(v0 + 1, lastV);
+    const unsigned char *r0 = bitmap + static_cast<std::ptrdiff_t>(v0) * width,
+                        *r1 = bitmap + static_cast<std::ptrdiff_t>(v1) * width;
+    const double top = (1. - fu) * r0[u0] + fu * r0[u1];
+    const double bottom = (1. - fu) * r1[u0] + fu * r1[u1];
+    const float sample = static_cast<float>((1. - fv) * top + fv * bottom);
+    p[i] = sample;
     if (i > 0) {
       // Trapezoidal integral of the profile from 0 to rho.
-      C.push_back(C.back() + 0.5 * m_step * (P[i - 1] + P[i]));
+      integral = integral + halfStep * (previous + sample);
+      c[i] = integral;
     }
+    previous = sample;
   }
 }
 
@@ -161,17 +192,22 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
 {
   const std::vector<float> &P = m_profile[d];
   const std::vector<double> &C = m_prefix[d];
-  const double q = std::sqrt(m_p);
-  // Integral of the profile from 0 to rho, linear between samples.
-  auto integral = [&](double rho) {
-    const double k = rho / m_step;
-    const size_t i = std::min(static_cast<size_t>(k), C.size() - 1);
+  const double q = m_q;
+  // Integral of the profile from 0 to rho, linear between samples (rho / m_step as a product: m_step is a
+  // power of two, so both are exact).
+  const float *p = P.data();
+  const double *c = C.data();
+  const size_t lastC = C.size() - 1, nbP = P.size();
+  const double invStep = 1. / m_step, step = m_step;
+  auto integral = [=](double rho) {
+    const double k = rho * invStep;
+    const size_t i = std::min(static_cast<size_t>(k), lastC);
     const double f = k - static_cast<double>(i);
-    if (i + 1 >= P.size()) {
-      return C[i];
+    if (i + 1 >= nbP) {
+      return c[i];
     }
-    const double pr = P[i] + 0.5 * f * (P[i + 1] - P[i]);
-    return C[i] + f * m_step * pr;
+    const double pr = p[i] + 0.5 * f * (p[i + 1] - p[i]);
+    return c[i] + f * step * pr;
   };
   // Contrast of each pair of adjacent rings, signed so that it is positive where the rings alternate
   // as printed: ring k is black for even k (the outermost ring is black), white for odd k.
@@ -180,11 +216,9 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
   double previous = 0., outerEdge = radius, cmax = 0.;
   // Each ring's outer edge is the previous one's inner edge: its integral is carried over.
   double outerIntegral = integral(outerEdge);
-  // Clearly resolvable pairs at this radius, before the cap by the pairs read (nbExpected below).
-  int clearPairs = 0;
-  for (double r = radius * q; clearPairs < 64 && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
-    ++clearPairs;
-  }
+  // Clearly resolvable pairs at this radius, before the cap by the pairs read (nbExpected below): only
+  // min(clearPairs, 4) matters below (it is compared with at most 3 pairs), counted when first needed.
+  int clearPairs = -1;
   for (int k = 0; nb < 64; ++k) {
     const double innerEdge = outerEdge * q;
     if (outerEdge - innerEdge < kMinRingWidth * m_pixelScale || innerEdge < kMinRingRadius * m_pixelScale) {
@@ -210,7 +244,14 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       // weaker pair ends the count here, below the alternations rayCandidates() needs (at least
       // max(2, min(nbExpected - 1, kMinAlternations)), nbExpected >= min(clearPairs, nb)). Clutter mostly
       // ends here, after a few rings instead of all of them; the result is the same.
-      const int needed = std::max(2, std::min(std::min(clearPairs, nb) - 1, kMinAlternations));
+      if (nb <= kMinAlternations && clearPairs < 0) {
+        clearPairs = 0;
+        for (double r = radius * q; clearPairs < 4 && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
+          ++clearPairs;
+        }
+      }
+      const int needed = nb <= kMinAlternations ? std::max(2, std::min(std::min(clearPairs, nb) - 1, kMinAlternations))
+                                                : kMinAlternations;
       if (nb - 1 < needed && contrast[nb - 1] < 0.25 * cmax) {
         nbPairsOut = 0;
         outerContrast = contrast[0];
@@ -297,11 +338,20 @@ bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
     const double margin = 0.25 * (outer - inner);
     const size_t i0 = static_cast<size_t>(std::ceil((inner + margin) / m_step)) + 1;
     const size_t i1 = std::min(P.size() - 2, static_cast<size_t>(std::floor((outer - margin) / m_step)));
+    // Three neighbouring samples (1.5 px) so that sensor noise does not flip a sample. Their means are kept
+    // with the ray: the dozen radii a tracked ray is read at share most of them.
+    std::vector<double> &mean3 = m_mean3[d];
+    if (i0 <= i1 && mean3.size() < i1 + 1) {
+      size_t i = std::max<size_t>(1, mean3.size());
+      mean3.resize(i1 + 1);
+      for (; i <= i1; ++i) {
+        mean3[i] = (P[i - 1] + P[i] + P[i + 1]) / 3.;
+      }
+    }
     size_t n = 0, right = 0;
+    const double *value = mean3.data();
     for (size_t i = i0; i <= i1; ++i, ++n) {
-      // Three neighbouring samples (1.5 px) so that sensor noise does not flip a sample.
-      const double value = (P[i - 1] + P[i] + P[i + 1]) / 3.;
-      right += ((value < mid) == (k == 0)) ? 1 : 0;
+      right += ((value[i] < mid) == (k == 0)) ? 1 : 0;
     }
     if (n > 0 && right < kSolidRing * n) {
       return false;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "vpSSLMatchingKernel.h"
 #include "vpSSLRadiusEstimatorInternal.h"
 
 using namespace vpSSLRadiusEstimatorInternal;
@@ -259,58 +260,85 @@ bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, doubl
     return sum2 / n - (sum / n) * (sum / n);
   };
   // Pixels p and q with p + q = 2 c, c = (su, sv) / 2: p = (su >> 1, sv >> 1) + (dx, dy) and
-  // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once.
-  if (m_symmetryRadius != radius || m_symmetryWidth != W) {
-    m_symmetryOffsets.clear();
+  // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once: row dy
+  // of it spans dx in [m_symmetryOffsets[dy], rx], rx = m_symmetryOffsets[radius + 1 + dy].
+  if (m_symmetryRadius != radius) {
+    m_symmetryOffsets.assign(2 * (radius + 1), 0);
     for (int dy = 0; dy <= radius; ++dy) {
-      for (int dx = -radius; dx <= radius; ++dx) {
-        if (dx * dx + dy * dy <= radius * radius && (dy > 0 || dx > 0)) {
-          m_symmetryOffsets.push_back(dy * W + dx);
+      int rx = 0;
+      while ((rx + 1) * (rx + 1) + dy * dy <= radius * radius) {
+        ++rx;
+      }
+      m_symmetryOffsets[dy] = dy == 0 ? 1 : -rx;
+      m_symmetryOffsets[radius + 1 + dy] = rx;
+    }
+    m_symmetryRadius = radius;
+  }
+  const int *rowFirst = m_symmetryOffsets.data(), *rowLast = rowFirst + radius + 1;
+  // Both halves are copied: p = (su >> 1, sv >> 1) + (dx, dy) as is, q - (dx, dy) turned by half a turn (it runs
+  // backwards through the image), so that every row of the half disc is two contiguous byte runs compared in SIMD
+  // (vpSSLMatchingKernel::squaredDifferenceRows()). The copies cover every centre of the search window: p in
+  // [pu0, pu1] x [pv0, pv1] (p = floor(s / 2)), q in [qu0, qu1] x [qv0, qv1] (q = ceil(s / 2)); their rows are
+  // padded for the vector loads past a row's end.
+  const int pu0 = (cu - reach) >> 1, pv0 = (cv - reach) >> 1, pu1 = (cu + reach) >> 1, pv1 = (cv + reach) >> 1;
+  const int qu0 = (cu - reach + 1) >> 1, qv0 = (cv - reach + 1) >> 1;
+  const int qu1 = (cu + reach + 1) >> 1, qv1 = (cv + reach + 1) >> 1;
+  const int kPad = 64;
+  const int pw = std::max(pu1 - pu0, qu1 - qu0) + 1 + 2 * radius + kPad;
+  const int phP = pv1 - pv0 + 1 + radius, phQ = qv1 - qv0 + 1 + radius;
+  m_symmetryPatch.resize(static_cast<size_t>(pw) * (phP + phQ + 1));
+  unsigned char *patchP = m_symmetryPatch.data(), *patchQ = patchP + static_cast<size_t>(pw) * phP;
+  // patchP(y, x) = I(pv0 + y, pu0 - radius + x); patchQ(y, x) = I(qv1 - y, qu1 + radius - x), so that
+  // I(q.v - dy, q.u - dx) is patchQ(qv1 - q.v + dy, qu1 + radius - q.u + dx).
+  for (int y = 0; y < phP; ++y) {
+    const unsigned char *src = I[pv0 + y] + pu0 - radius;
+    std::copy(src, src + pu1 - pu0 + 1 + 2 * radius, patchP + static_cast<size_t>(y) * pw);
+  }
+  for (int y = 0; y < phQ; ++y) {
+    const unsigned char *src = I[qv1 - y] + qu1 + radius;
+    unsigned char *dst = patchQ + static_cast<size_t>(y) * pw;
+    for (int x = 0; x <= qu1 - qu0 + 2 * radius; ++x) {
+      dst[x] = src[-x];
+    }
+  }
+  // Sum of squared differences (exact in integers) about the centre (su, sv) / 2, given up as soon as it
+  // exceeds \e bound (returns bound + 1 then): only the minimum and its neighbours are needed. Where it is
+  // given up does not matter: a value above the bound is never the minimum.
+  auto energy = [&](int su, int sv, long bound) {
+    const int pu = su >> 1, pv = sv >> 1, qu = (su >> 1) + (su & 1), qv = (sv >> 1) + (sv & 1);
+    const unsigned char *p = patchP + static_cast<long>(pv - pv0) * pw + (pu - pu0 + radius);
+    const unsigned char *q = patchQ + static_cast<long>(qv1 - qv) * pw + (qu1 + radius - qu);
+    return vpSSLMatchingKernel::squaredDifferenceRows(p, pw, q, pw, rowFirst, rowLast, radius + 1, bound);
+  };
+  // The minimum over the search window, the first in row-major order on ties, whatever the order of evaluation.
+  // The peak's own position is the likeliest minimum, and its neighbours the next likeliest: evaluated first
+  // (nearest first), they let most others be given up early.
+  if (m_symmetryOrder.empty()) {
+    for (int j = -reach; j <= reach; ++j) {
+      for (int i = -reach; i <= reach; ++i) {
+        if (i != 0 || j != 0) {
+          m_symmetryOrder.push_back((j + reach) * (2 * reach + 1) + (i + reach));
         }
       }
     }
-    m_symmetryRadius = radius;
-    m_symmetryWidth = W;
+    // Nearest first, row-major among equals (std::sort with a total order: std::stable_sort would take a buffer).
+    std::sort(m_symmetryOrder.begin(), m_symmetryOrder.end(), [&](int a, int b) {
+      const int ai = a % (2 * reach + 1) - reach, aj = a / (2 * reach + 1) - reach;
+      const int bi = b % (2 * reach + 1) - reach, bj = b / (2 * reach + 1) - reach;
+      const int da = ai * ai + aj * aj, db = bi * bi + bj * bj;
+      return da < db || (da == db && a < b);
+    });
   }
-  const int *offsets = m_symmetryOffsets.data();
-  const int nbOffsets = static_cast<int>(m_symmetryOffsets.size());
-  const unsigned char *bitmap = I.bitmap;
-  // Sum of squared differences (exact in integers) about the centre (su, sv) / 2, given up as soon as it
-  // exceeds \e bound (returns bound + 1 then): only the minimum and its neighbours are needed.
-  auto energy = [&](int su, int sv, long bound) {
-    const unsigned char *p = bitmap + static_cast<long>(sv >> 1) * W + (su >> 1);
-    const unsigned char *q = bitmap + static_cast<long>((sv >> 1) + (sv & 1)) * W + (su >> 1) + (su & 1);
-    long e = 0;
-    for (int k = 0; k < nbOffsets;) {
-      const int end = std::min(nbOffsets, k + 16);
-      int partial = 0;
-      for (; k < end; ++k) {
-        const int diff = static_cast<int>(p[offsets[k]]) - static_cast<int>(q[-offsets[k]]);
-        partial += diff * diff;
-      }
-      e += partial;
-      if (e > bound) {
-        return bound + 1;
-      }
-    }
-    return e;
-  };
-  // The minimum over the search window, the first in row-major order on ties. The peak's own position
-  // is the likeliest minimum: evaluated first, it lets most others be given up early.
   const long unbounded = std::numeric_limits<long>::max() - 1;
   long bestE = energy(cu, cv, unbounded);
   int bi = 0, bj = 0;
-  for (int j = -reach; j <= reach; ++j) {
-    for (int i = -reach; i <= reach; ++i) {
-      if (i == 0 && j == 0) {
-        continue;
-      }
-      const long e = energy(cu + i, cv + j, bestE);
-      if (e < bestE || (e == bestE && (j < bj || (j == bj && i < bi)))) {
-        bestE = e;
-        bi = i;
-        bj = j;
-      }
+  for (const int k : m_symmetryOrder) {
+    const int i = k % (2 * reach + 1) - reach, j = k / (2 * reach + 1) - reach;
+    const long e = energy(cu + i, cv + j, bestE);
+    if (e < bestE || (e == bestE && (j < bj || (j == bj && i < bi)))) {
+      bestE = e;
+      bi = i;
+      bj = j;
     }
   }
   auto E = [&](int i, int j) { return static_cast<double>(energy(cu + i, cv + j, unbounded)); };

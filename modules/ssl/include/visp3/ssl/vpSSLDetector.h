@@ -118,7 +118,12 @@ public:
   bool getSmallLandmarkMode() const { return m_upsample; }
   /*!
     Restricts the next detections to these rectangles (empty: whole image). Landmarks whose centre
-    lies inside a rectangle are found as long as the rectangle extends w around them.
+    lies inside a rectangle are found as long as the rectangle extends w around them. In these tracking
+    frames only the pixels the regions' matching reads are normalised (with the table of the whole image, so
+    that the map is the one a full search gives there), and a landmark of the previous frame is re-read around
+    its previous ellipse; with setDecimation(2) that re-reading starts from the decimated peak, and the
+    landmark's score is the full-resolution map at its centre (a full search reports the maximum of the map
+    nearby, which may be a little higher).
   */
   void setRegionsOfInterest(const std::vector<vpRect> &rois);
   /*!
@@ -170,7 +175,11 @@ public:
 
 private:
   void fillObjects();
+  void matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
+                    const std::vector<vpRect> &rois);
   int fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const;
+  void normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach);
+  int crossMatch(int u, int v) const;
   bool refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid);
 
   vpSSLBrightnessNormalizer m_normalizer;
@@ -193,15 +202,21 @@ private:
 
   vpImage<unsigned char> m_normalized;
   vpImage<unsigned char> m_upsampled;
-  vpImage<unsigned char> m_decimated;    // normalised, decimated image (decimation 2)
-  vpImage<unsigned char> m_sweepRow;     // one normalised full-resolution row, for the Eq. 7 sweep
-  unsigned char m_lut[256];              // normalisation table of the last frame
-  int m_offsetA[129], m_offsetB[129];    // a_xi, b_xi of the full-resolution window (refinePeak())
-  std::vector<vpImagePoint> m_refined;   // full-resolution peaks already read this frame
+  vpImage<unsigned char> m_decimated;  // normalised, decimated image (decimation 2)
+  vpImage<unsigned char> m_sweepRow;   // one normalised full-resolution row, for the Eq. 7 sweep
+  unsigned char m_lut[256];            // normalisation table of the last frame
+  int m_offsetA[129], m_offsetB[129];  // a_xi, b_xi of the full-resolution window (refinePeak())
+  std::vector<vpImagePoint> m_refined; // full-resolution peaks already read this frame
+  // Normalised pixels around a decimated peak (refinePeak()): rows (row-major) and columns (column-major).
+  std::vector<unsigned char> m_crossRows, m_crossCols;
+  int m_crossU0 = 0, m_crossV0 = 0, m_crossW = 0, m_crossCu0 = 0, m_crossCv0 = 0, m_crossH = 0;
+  int m_imageW = 0, m_imageH = 0;
   std::vector<vpSSLLandmark> m_previous; // landmarks of the previous detect(), re-read in tracking mode
   std::vector<char> m_roiFilled;         // whether a landmark has been read inside each region this frame
   std::vector<vpRect> m_scaledRois;
   vpImage<int> m_map;
+  std::vector<vpRect> m_mapWritten; // regions the last tracking frame wrote into m_map (the rest is 0)
+  bool m_mapAllWritten = true;      // whether the last call wrote the whole map (or m_map is uninitialised)
   std::vector<vpSSLPeak> m_peaks;
   std::vector<vpSSLLandmark> m_landmarks;
   std::vector<int> m_sweep; // Eq. 7 sweep, reused

@@ -85,6 +85,14 @@ public:
   void compute(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M) const;
 
   /*!
+    As compute(I, rois, M), but only the pixels inside the rectangles are written: the others keep their values
+    (if M has not the image's size, it is resized and set to 0 first). For a caller that keeps M zero outside its
+    regions itself, by clearing only the regions it wrote last (vpSSLDetector's tracking frames), rather than the
+    whole map at every call.
+  */
+  void computeInside(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M) const;
+
+  /*!
     Matching function in one direction at one pixel for any window length (Eq. 3, unnormalised sum),
     used by the apparent-radius sweep (Eq. 7).
     \return false (and leaves \e value untouched) when the window leaves the image.
@@ -113,6 +121,9 @@ public:
   int offsetP(unsigned int xi) const;
 
 private:
+  void computeRegions(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M,
+                      bool clearOutside) const;
+
   unsigned int m_window;
   double m_p;
   unsigned int m_nbThreads;

@@ -66,6 +66,7 @@ private:
   unsigned int m_minDistance;
   unsigned int m_maxPeaks;
   std::vector<vpSSLPeak> m_candidates; // reused between frames
+  std::vector<int> m_columns;          // columns of one row over the threshold (scanRegion()), reused
 };
 
 #endif

@@ -104,11 +104,13 @@ private:
   double m_maxRadius;
   unsigned int m_minDirections;
   double m_p;
+  double m_q; // sqrt(p), the ratio of successive ring edges
   double m_step;
   double m_pixelScale;
   // Per-ray profiles and their prefix sums, reused between candidates.
   std::vector<float> m_profile[8];
   std::vector<double> m_prefix[8];
+  mutable std::vector<double> m_mean3[8];       // means of three neighbouring samples (solidRings()), read as needed
   mutable std::vector<double> m_grid, m_scores; // radius search scratch
   std::vector<Candidate> m_candidates[8];
   std::vector<double> m_valid; // selectRadii() scratch
@@ -121,10 +123,12 @@ private:
   std::vector<double> m_fullGrid;
   bool m_levelZeroOnly = false; // tracked re-reading: only the previous level is searched
   double m_fullGridMin = 0., m_fullGridMax = 0.;
-  // Linear pixel offsets of the half disc compared with its half-turn (symmetryCentre()), for this radius and width.
+  // Row extents of the half disc compared with its half-turn (symmetryCentre()), for this radius; the
+  // neighbourhood turned by half a turn; the order in which the search window is evaluated.
   std::vector<int> m_symmetryOffsets;
   int m_symmetryRadius = -1;
-  int m_symmetryWidth = -1;
+  std::vector<unsigned char> m_symmetryPatch;
+  std::vector<int> m_symmetryOrder;
 };
 
 #endif

@@ -1,0 +1,220 @@
+/*
+  The fast paths of vpSSLDetector (issue 4, fourth round) give the readings of the plain ones:
+  - the symmetry centring's SIMD kernel (vpSSLMatchingKernel::squaredDifferenceRows()) gives the same landmarks,
+    bit for bit, on every SIMD target compiled in, for the full-resolution, decimated and small-landmark modes,
+    full frames and tracking frames;
+  - a tracking frame without decimation normalises only the pixels its regions read (and the Eq. 7 sweep its
+    row): the landmarks, radiusEq7 included, are those of the whole-image normalisation;
+  - a tracked landmark with decimation is re-read from the decimated peak (no climb to the full-resolution
+    maximum): its score is the full-resolution map at its centre, close to the full search's.
+*/
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <visp3/core/vpMath.h>
+#include <visp3/core/vpRect.h>
+#include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLRenderer.h>
+
+namespace {
+struct View
+{
+  vpImage<unsigned char> I;
+  std::vector<vpImagePoint> centres; // projected landmark centres, target order
+};
+
+// ssl3-a3 at `distance` m, turned by a few degrees, through a 56-degree 640x480 camera.
+View render(double distance)
+{
+  View v;
+  const vpHomogeneousMatrix cMo(0.02, -0.01, distance, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+  vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
+  renderer.setTarget(vpSSLTarget::ssl3a3());
+  renderer.render(cMo, v.I);
+  v.centres = renderer.projectLandmarks(cMo);
+  return v;
+}
+
+std::vector<vpRect> roisAround(const std::vector<vpImagePoint> &centres)
+{
+  std::vector<vpRect> rois;
+  for (const vpImagePoint &c : centres) {
+    rois.push_back(vpRect(c.get_u() - 50., c.get_v() - 50., 100., 100.));
+  }
+  return rois;
+}
+
+// Every field of every landmark of a run of frames.
+std::vector<vpSSLLandmark> run(vpSSLDetector &detector, const vpImage<unsigned char> &I, int frames)
+{
+  std::vector<vpSSLLandmark> all;
+  for (int k = 0; k < frames; ++k) {
+    detector.detect(I);
+    all.insert(all.end(), detector.getLandmarks().begin(), detector.getLandmarks().end());
+  }
+  return all;
+}
+
+void expectSame(const vpSSLLandmark &a, const vpSSLLandmark &b, const char *what)
+{
+  EXPECT_EQ(a.u, b.u) << what;
+  EXPECT_EQ(a.v, b.v) << what;
+  EXPECT_EQ(a.radius, b.radius) << what;
+  EXPECT_EQ(a.minorRadius, b.minorRadius) << what;
+  EXPECT_EQ(a.theta, b.theta) << what;
+  EXPECT_EQ(a.score, b.score) << what;
+  EXPECT_EQ(a.radiusEq7, b.radiusEq7) << what;
+  EXPECT_EQ(a.nbDirections, b.nbDirections) << what;
+  for (int d = 0; d < 8; ++d) {
+    EXPECT_EQ(a.directionalRadius[d], b.directionalRadius[d]) << what << ", direction " << d;
+  }
+}
+
+// Modes: 0 full resolution, 1 decimation 2, 2 small-landmark mode (symmetry disc of radius 16 on the upsampled
+// image), each on full frames then on tracking frames (regions around the landmarks, no full search).
+std::vector<vpSSLLandmark> allModes(const View &near, const View &far)
+{
+  std::vector<vpSSLLandmark> all;
+  for (int mode = 0; mode < 3; ++mode) {
+    const View &v = mode == 2 ? far : near;
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setDecimation(mode == 1 ? 2 : 1);
+    detector.setSmallLandmarkMode(mode == 2);
+    std::vector<vpSSLLandmark> l = run(detector, v.I, 1);
+    all.insert(all.end(), l.begin(), l.end());
+    detector.setFullSearchPeriod(0);
+    detector.setRegionsOfInterest(roisAround(v.centres));
+    l = run(detector, v.I, 2);
+    all.insert(all.end(), l.begin(), l.end());
+  }
+  return all;
+}
+} // namespace
+
+TEST(DetectorSpeedPaths, EverySimdTargetGivesTheSameLandmarks)
+{
+  const View near = render(1.0), far = render(3.0);
+  const std::vector<vpSSLLandmark> best = allModes(near, far);
+  ASSERT_GE(best.size(), 3u * 3u);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  for (int64_t t : targets) {
+    hwy::SetSupportedTargetsForTest(t);
+    const std::vector<vpSSLLandmark> l = allModes(near, far);
+    ASSERT_EQ(l.size(), best.size()) << hwy::TargetName(t);
+    for (size_t k = 0; k < l.size(); ++k) {
+      expectSame(l[k], best[k], hwy::TargetName(t));
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
+TEST(DetectorSpeedPaths, RoiNormalisationGivesTheWholeImageReading)
+{
+  for (int mode = 0; mode < 2; ++mode) {
+    const View v = render(mode == 0 ? 1.0 : 3.0);
+    vpSSLDetector full;
+    full.setNbThreads(1);
+    full.setSmallLandmarkMode(mode == 1);
+    ASSERT_TRUE(full.detect(v.I));
+    vpSSLDetector tracked;
+    tracked.setNbThreads(1);
+    tracked.setSmallLandmarkMode(mode == 1);
+    tracked.setFullSearchPeriod(0);
+    tracked.setRegionsOfInterest(roisAround(v.centres));
+    // The first tracking frame has no previous landmark: every landmark is read from scratch, as in the full
+    // search, but on an image of which only the regions (grown by the window) are normalised.
+    ASSERT_TRUE(tracked.detect(v.I));
+    EXPECT_FALSE(tracked.getLastSearchWasFull());
+    ASSERT_EQ(tracked.getLandmarks().size(), 3u) << "mode " << mode;
+    for (const vpSSLLandmark &b : tracked.getLandmarks()) {
+      const vpSSLLandmark *a = nullptr;
+      for (const vpSSLLandmark &l : full.getLandmarks()) {
+        if (std::hypot(l.u - b.u, l.v - b.v) < 1.) {
+          a = &l;
+        }
+      }
+      ASSERT_NE(a, nullptr) << "mode " << mode << ": landmark at " << b.u << ", " << b.v << " not in the full search";
+      expectSame(b, *a, mode == 0 ? "full resolution" : "small-landmark mode");
+    }
+  }
+}
+
+TEST(DetectorSpeedPaths, TrackedDecimatedScoreIsTheMapAtTheCentre)
+{
+  const View v = render(1.0);
+  vpSSLDetector full;
+  full.setNbThreads(1);
+  full.setDecimation(2);
+  ASSERT_TRUE(full.detect(v.I));
+  vpSSLDetector tracked;
+  tracked.setNbThreads(1);
+  tracked.setDecimation(2);
+  tracked.setFullSearchPeriod(0);
+  tracked.setRegionsOfInterest(roisAround(v.centres));
+  ASSERT_TRUE(tracked.detect(v.I)); // read from scratch
+  ASSERT_TRUE(tracked.detect(v.I)); // re-read around the previous ellipses
+  ASSERT_EQ(tracked.getLandmarks().size(), 3u);
+  for (const vpSSLLandmark &b : tracked.getLandmarks()) {
+    const vpSSLLandmark *a = nullptr;
+    for (const vpSSLLandmark &l : full.getLandmarks()) {
+      if (std::hypot(l.u - b.u, l.v - b.v) < 1.) {
+        a = &l;
+      }
+    }
+    ASSERT_NE(a, nullptr);
+    EXPECT_NEAR(b.u, a->u, 0.05);
+    EXPECT_NEAR(b.v, a->v, 0.05);
+    EXPECT_NEAR(b.radius / a->radius, 1., 0.01);
+    // The full search's score is the climbed maximum of the map near the centre, the tracked one the map at the
+    // centre: a little lower at most, and over the detection threshold.
+    EXPECT_GE(b.score, full.getThreshold());
+    EXPECT_LE(b.score, 1.);
+    EXPECT_NEAR(b.score, a->score, 0.1);
+  }
+}
+
+TEST(DetectorSpeedPaths, MatchingMapIsZeroOutsideTheRegionsFromFrameToFrame)
+{
+  // Tracking frames clear only the regions the previous one wrote: after regions that move, a full search and
+  // regions again, the map is the one a fresh detector computes with the same regions (zero elsewhere).
+  const View v = render(1.0);
+  const std::vector<vpRect> a = roisAround(v.centres);
+  std::vector<vpRect> b;
+  for (const vpRect &r : a) {
+    b.push_back(vpRect(r.getLeft() + 37., r.getTop() - 23., 80., 120.));
+  }
+  b.push_back(vpRect(-30., 400., 100., 200.)); // partly outside the image
+  for (unsigned int decimation : {1u, 2u}) {
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setDecimation(decimation);
+    detector.setFullSearchPeriod(4);
+    const std::vector<vpRect> *sequence[] = {&a, &b, &a, &b, &b, &a}; // the 4th call searches the whole image
+    for (size_t k = 0; k < 6; ++k) {
+      detector.setRegionsOfInterest(*sequence[k]);
+      detector.detect(v.I);
+      EXPECT_EQ(detector.getLastSearchWasFull(), k == 3);
+      vpSSLDetector fresh;
+      fresh.setNbThreads(1);
+      fresh.setDecimation(decimation);
+      if (k != 3) {
+        fresh.setFullSearchPeriod(0);
+        fresh.setRegionsOfInterest(*sequence[k]);
+      }
+      fresh.detect(v.I);
+      const vpImage<int> &M = detector.getMatchingMap(), &F = fresh.getMatchingMap();
+      ASSERT_EQ(M.getSize(), F.getSize());
+      size_t different = 0;
+      for (unsigned int i = 0; i < M.getSize(); ++i) {
+        different += M.bitmap[i] != F.bitmap[i] ? 1 : 0;
+      }
+      EXPECT_EQ(different, 0u) << "decimation " << decimation << ", call " << k;
+    }
+  }
+}
