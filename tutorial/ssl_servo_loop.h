@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -38,6 +39,35 @@
 #include "ssl_apriltag_baseline.h"
 
 namespace sslservo {
+
+//! A bad command line: the tutorials print its message on one line and exit with status 2.
+struct UsageError
+{
+  std::string message;
+};
+
+//! The finite number \e text, value of option \e name. \exception UsageError otherwise.
+inline double parseDouble(const std::string &name, const std::string &text)
+{
+  char *end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) {
+    throw UsageError{name + ": not a number: \"" + text + "\""};
+  }
+  return v;
+}
+
+//! The integer \e text in [minimum, maximum], value of option \e name. \exception UsageError otherwise.
+inline long parseInteger(const std::string &name, const std::string &text, long minimum, long maximum)
+{
+  char *end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < minimum || v > maximum) {
+    throw UsageError{name + ": expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+                     "], got \"" + text + "\""};
+  }
+  return v;
+}
 
 //! How the target is found at each step.
 enum class Method

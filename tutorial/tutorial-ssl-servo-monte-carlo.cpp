@@ -30,6 +30,10 @@
 #include "ssl_servo_loop.h"
 
 namespace {
+using sslservo::parseDouble;
+using sslservo::parseInteger;
+using sslservo::UsageError;
+
 const char *kUsage = R"(Usage: tutorial-ssl-servo-monte-carlo [options]
 Monte Carlo docking benchmark: N runs of the closed loop of tutorial-ssl-servo (simulated AUV, rendered images,
 detection, homing behaviour with auto-dock) from random starts, the same draws for every method. Per run: start
@@ -75,33 +79,6 @@ struct Options
   bool small = false;
   bool quiet = false;
 };
-
-// Thrown for a bad command line: exit code 2.
-struct UsageError
-{
-  std::string message;
-};
-
-double parseDouble(const std::string &name, const std::string &text)
-{
-  char *end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v)) {
-    throw UsageError{name + ": not a number: \"" + text + "\""};
-  }
-  return v;
-}
-
-long parseInteger(const std::string &name, const std::string &text, long minimum, long maximum)
-{
-  char *end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < minimum || v > maximum) {
-    throw UsageError{name + ": expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
-                     "], got \"" + text + "\""};
-  }
-  return v;
-}
 
 std::vector<sslservo::Method> parseMethods(const std::string &text)
 {

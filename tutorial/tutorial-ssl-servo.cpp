@@ -19,6 +19,10 @@
 #include "ssl_servo_loop.h"
 
 namespace {
+using sslservo::parseDouble;
+using sslservo::parseInteger;
+using sslservo::UsageError;
+
 const char *kUsage = R"(Usage: tutorial-ssl-servo [options]
 Closes the homing loop of the paper's Sec. 5 on the simulated AUV: at each control step (5 Hz) the camera
 image is rendered at the true pose, the target is found (SSL tracker or AprilTag baseline) and the homing
@@ -55,32 +59,6 @@ struct Options
   bool quiet = false;
 };
 
-// Thrown for a bad command line: exit code 2.
-struct UsageError
-{
-  std::string message;
-};
-
-double parseDouble(const std::string &name, const std::string &text)
-{
-  char *end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v)) {
-    throw UsageError{name + ": not a number: \"" + text + "\""};
-  }
-  return v;
-}
-
-long parsePositive(const std::string &name, const std::string &text, long minimum)
-{
-  char *end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < minimum || v > 100000) {
-    throw UsageError{name + ": expected an integer >= " + std::to_string(minimum) + ", got \"" + text + "\""};
-  }
-  return v;
-}
-
 Options parse(int argc, char **argv, bool &help)
 {
   Options o;
@@ -111,17 +89,17 @@ Options parse(int argc, char **argv, bool &help)
         throw UsageError{"--duration: expected a value in (0, 3600] s"};
       }
     } else if (a == "--seed") {
-      o.seed = parsePositive(a, value(), 0);
+      o.seed = parseInteger(a, value(), 0, 100000);
     } else if (a == "--output-dir") {
       o.outputDir = value();
     } else if (a == "--width") {
-      o.width = static_cast<unsigned int>(parsePositive(a, value(), 64));
+      o.width = static_cast<unsigned int>(parseInteger(a, value(), 64, 100000));
     } else if (a == "--height") {
-      o.height = static_cast<unsigned int>(parsePositive(a, value(), 48));
+      o.height = static_cast<unsigned int>(parseInteger(a, value(), 48, 100000));
     } else if (a == "--small") {
       o.small = true;
     } else if (a == "--supersampling") {
-      o.supersampling = static_cast<int>(parsePositive(a, value(), 1));
+      o.supersampling = static_cast<int>(parseInteger(a, value(), 1, 100000));
       if (o.supersampling > 8) {
         throw UsageError{"--supersampling: expected 1 to 8"};
       }
