@@ -215,24 +215,38 @@ int main(int argc, char **argv)
       p.setXRange(0., tEnd);
       return p;
     };
+    // The panels the scenarios share.
+    auto yawPanel = [&](const std::string &title) {
+      vpSSLPlot p = panel(title, "rad/s");
+      p.addSeries("demanded", ts, column(&Row::yawDemand));
+      p.addSeries("actual", ts, column(&Row::yawRate), vpColor::red);
+      return p;
+    };
+    auto rangePanel = [&](const std::string &title) {
+      vpSSLPlot p = panel(title, "m");
+      p.addSeries("estimated", ts, column(&Row::estRange));
+      p.addSeries("true", ts, column(&Row::trueRange), vpColor::red);
+      return p;
+    };
+    auto nbPanel = [&]() {
+      vpSSLPlot p = panel("nbPoints", "points");
+      p.addSeries("nbPoints", ts, column(&Row::nbPoints));
+      return p;
+    };
+    auto statePanel = [&]() {
+      vpSSLPlot p = panel("State (0 search, 1 align, 2 home, 3 dock, 4 docked)", "state");
+      p.addSeries("state", ts, stateIndex);
+      p.setYRange(-0.5, 4.5);
+      return p;
+    };
     std::vector<vpSSLPlot> panels;
     const std::string what = opt.scenario + ", " + opt.method;
     if (opt.scenario == "fig7" || field) {
-      vpSSLPlot yaw = panel("Yaw rate (" + what + ")", "rad/s");
-      yaw.addSeries("demanded", ts, column(&Row::yawDemand));
-      yaw.addSeries("actual", ts, column(&Row::yawRate), vpColor::red);
       vpSSLPlot depth = panel("Depth", "m");
       depth.addSeries("depth", ts, column(&Row::depth));
-      vpSSLPlot state = panel("State (0 search, 1 align, 2 home, 3 dock, 4 docked)", "state");
-      state.addSeries("state", ts, stateIndex);
-      state.setYRange(-0.5, 4.5);
-      vpSSLPlot nb = panel("nbPoints", "points");
-      nb.addSeries("nbPoints", ts, column(&Row::nbPoints));
-      vpSSLPlot rng = panel("Range", "m");
-      rng.addSeries("estimated", ts, column(&Row::estRange));
-      rng.addSeries("true", ts, column(&Row::trueRange), vpColor::red);
+      vpSSLPlot rng = rangePanel("Range");
       rng.addHorizontalLine(standOff, "stand-off");
-      panels = {yaw, depth, state, nb, rng};
+      panels = {yawPanel("Yaw rate (" + what + ")"), depth, statePanel(), nbPanel(), rng};
     } else if (opt.scenario == "fig8") {
       // As the paper's Fig. 8: the target's lateral position in the vehicle frame, which the yaw brings back to 0.
       vpSSLPlot lat = panel("Target lateral position in the vehicle frame (" + what + ")", "y_rel (m)");
@@ -241,23 +255,12 @@ int main(int argc, char **argv)
       lat.addSeries("target moved (world)", ts, column(&Row::targetY), vpColor::darkGreen);
       vpSSLPlot heading = panel("Heading", "deg");
       heading.addSeries("heading", ts, column(&Row::heading));
-      vpSSLPlot yaw = panel("Yaw rate", "rad/s");
-      yaw.addSeries("demanded", ts, column(&Row::yawDemand));
-      yaw.addSeries("actual", ts, column(&Row::yawRate), vpColor::red);
-      panels = {lat, heading, yaw};
+      panels = {lat, heading, yawPanel("Yaw rate")};
     } else {
-      vpSSLPlot rng = panel("Range (" + what + ")", "m");
-      rng.addSeries("estimated", ts, column(&Row::estRange));
-      rng.addSeries("true", ts, column(&Row::trueRange), vpColor::red);
-      vpSSLPlot nb = panel("nbPoints", "points");
-      nb.addSeries("nbPoints", ts, column(&Row::nbPoints));
       vpSSLPlot col = panel("Collision", "flag");
       col.addSeries("collision", ts, column(&Row::collision));
       col.setYRange(-0.1, 1.1);
-      vpSSLPlot state = panel("State (0 search, 1 align, 2 home, 3 dock, 4 docked)", "state");
-      state.addSeries("state", ts, stateIndex);
-      state.setYRange(-0.5, 4.5);
-      panels = {rng, nb, col, state};
+      panels = {rangePanel("Range (" + what + ")"), nbPanel(), col, statePanel()};
     }
     vpSSLPlot::saveStacked(panels, base + ".png");
 
