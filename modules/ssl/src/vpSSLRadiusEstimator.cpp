@@ -450,7 +450,9 @@ bool vpSSLRadiusEstimator::selectRadii(const double *ref, double R[8], bool ok[8
   const int order[8] = {0, 4, 2, 6, 1, 5, 3, 7};
   unsigned int empty = 0;
   for (int d : order) {
-    rayCandidates(d, ref ? ref[d] : 0., candidates[d]);
+    if (!m_keepCandidates) {
+      rayCandidates(d, ref ? ref[d] : 0., candidates[d]);
+    }
     empty += candidates[d].empty() ? 1 : 0;
     if (empty > 8 - m_minDirections) {
       return false;
@@ -633,8 +635,14 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
   for (int d = 0; d < 8; ++d) {
     ref[d] = first.radiusAlong(kCos[d], kSin[d]);
   }
-  if (!readRays(I, u, v, m_maxRadius) || !selectRadii(ref, R, ok, scale) ||
-      !refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok)) {
+  // The first reading's candidates are kept rather than read again from the refined centre: the centre moved by
+  // a fraction of a pixel, far less than the levels' tolerance (19 %), and refineCentre() finds every ring edge
+  // again from the refined centre. Reading and scoring all eight rays over the levels' windows again cost as much
+  // as the first reading.
+  m_keepCandidates = true;
+  const bool levels = selectRadii(ref, R, ok, scale);
+  m_keepCandidates = false;
+  if (!levels || !refineCentre(I, landmark.u, landmark.v, scale, u, v, R, ok)) {
     return false;
   }
   return finish(I, u, v, R, ok, landmark);

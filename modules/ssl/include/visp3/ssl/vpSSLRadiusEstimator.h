@@ -121,7 +121,8 @@ private:
   size_t m_raySamples[8] = {0, 0, 0, 0, 0, 0, 0, 0}; // length of each whole ray, in samples
   // Radius grid of the whole search range, built once (rayCandidates()).
   std::vector<double> m_fullGrid;
-  bool m_levelZeroOnly = false; // tracked re-reading: only the previous level is searched
+  bool m_levelZeroOnly = false;  // tracked re-reading: only the previous level is searched
+  bool m_keepCandidates = false; // selectRadii() takes the rays' candidates of the previous call as they are
   double m_fullGridMin = 0., m_fullGridMax = 0.;
   // Row extents of the half disc compared with its half-turn (symmetryCentre()), for this radius; the
   // neighbourhood turned by half a turn; the order in which the search window is evaluated.
