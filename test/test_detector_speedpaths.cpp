@@ -5,6 +5,8 @@
     full frames and tracking frames;
   - a tracking frame without decimation normalises only the pixels its regions read (and the Eq. 7 sweep its
     row): the landmarks, radiusEq7 included, are those of the whole-image normalisation;
+  - the normalisation table is applied in SIMD (byte shuffles): the default matching map is the reference map of
+    the image through the normaliser's table (from a histogram of one pixel in 16), on every SIMD target;
   - a tracked landmark with decimation is re-read from the decimated peak (no climb to the full-resolution
     maximum): its score is the full-resolution map at its centre, close to the full search's.
 */
@@ -17,6 +19,8 @@
 
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRect.h>
+#include <visp3/core/vpUniRand.h>
+#include <visp3/ssl/vpSSLBrightnessNormalizer.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 
@@ -112,6 +116,47 @@ TEST(DetectorSpeedPaths, EverySimdTargetGivesTheSameLandmarks)
     }
   }
   hwy::SetSupportedTargetsForTest(0);
+}
+
+TEST(DetectorSpeedPaths, NormalisedMapIsTheReferenceOnEverySimdTarget)
+{
+  // Every grey level, odd widths (vector tails), and a table that is not the identity: uniform noise over a
+  // narrow band, so that the 1 % and 99 % percentiles stretch it.
+  vpUniRand rng(7);
+  const unsigned int sizes[][2] = {{640, 480}, {161, 97}, {3, 200}};
+  for (const auto &sz : sizes) {
+    vpImage<unsigned char> I(sz[1], sz[0]);
+    for (unsigned int i = 0; i < I.getSize(); ++i) {
+      I.bitmap[i] = static_cast<unsigned char>(i % 7 == 0 ? rng.uniform(0, 256) : rng.uniform(60, 190));
+    }
+    unsigned char lut[256];
+    vpSSLBrightnessNormalizer().computeLut(I, lut, 4);
+    bool stretched = false;
+    for (int g = 0; g < 256; ++g) {
+      stretched = stretched || lut[g] != g;
+    }
+    ASSERT_TRUE(stretched);
+    vpImage<unsigned char> N(I.getHeight(), I.getWidth());
+    for (unsigned int i = 0; i < I.getSize(); ++i) {
+      N.bitmap[i] = lut[I.bitmap[i]];
+    }
+    vpImage<int> ref;
+    vpSSLMatchingFunction(40, 0.5).computeReference(N, ref);
+    for (int64_t t : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(t);
+      vpSSLDetector detector;
+      detector.setNbThreads(1);
+      detector.detect(I);
+      const vpImage<int> &M = detector.getMatchingMap();
+      ASSERT_EQ(M.getSize(), ref.getSize());
+      size_t different = 0;
+      for (unsigned int i = 0; i < M.getSize(); ++i) {
+        different += M.bitmap[i] != ref.bitmap[i] ? 1 : 0;
+      }
+      EXPECT_EQ(different, 0u) << hwy::TargetName(t) << ", " << sz[0] << "x" << sz[1];
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
 }
 
 TEST(DetectorSpeedPaths, RoiNormalisationGivesTheWholeImageReading)

@@ -8,6 +8,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 
+#include "vpSSLLookupKernel.h"
+
 namespace {
 // Window of the small-landmark mode on the twice upsampled image: 1.25 times the 16 px that an 8 px
 // landmark measures there (the response fades once w exceeds about 1.4 R, Eq. 2).
@@ -47,14 +49,12 @@ void decimate2(const vpImage<unsigned char> &I, const unsigned char *lut, int u0
   for (int v = v0; v < v1; ++v) {
     const unsigned char *a = I[2 * v], *b = I[2 * v + 1];
     unsigned char *out = O[v];
-    // Two passes over the row (in L1): the averages vectorise, the table look-up does not.
+    // Two passes over the row (in L1): the averages vectorise, and so does the table look-up on its own.
     for (int u = u0; u < u1; ++u) {
       out[u] = static_cast<unsigned char>((a[2 * u] + a[2 * u + 1] + b[2 * u] + b[2 * u + 1] + 2) >> 2);
     }
-    if (lut != nullptr) {
-      for (int u = u0; u < u1; ++u) {
-        out[u] = lut[out[u]];
-      }
+    if (lut != nullptr && u1 > u0) {
+      vpSSLLookupKernel::applyTable(lut, out + u0, out + u0, static_cast<size_t>(u1 - u0));
     }
   }
 }
@@ -71,8 +71,9 @@ unsigned int coarseWindow(unsigned int w)
   return std::max(2u, (7 * w + 10) / 20);
 }
 
-// Sampling step of the normalisation histogram in decimated mode: one pixel in 16 (19200 at 640x480, plenty
-// for the 1 % and 99 % percentiles).
+// Sampling step of the normalisation histogram: one pixel in 16 (19200 at 640x480, plenty for the 1 % and 99 %
+// percentiles). The whole histogram cost a tenth of the frame's time, and most of a tracking frame's
+// normalisation, which needs the whole image's table.
 const unsigned int kHistogramStep = 4;
 
 double elapsedMs(std::chrono::steady_clock::time_point &t)
@@ -243,12 +244,14 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
     In = raw;
     if (m_normalize && rois->empty()) {
-      m_normalizer.apply(*raw, m_normalized);
+      m_normalizer.computeLut(*raw, m_lut, kHistogramStep);
+      m_normalized.resize(raw->getHeight(), raw->getWidth());
+      vpSSLLookupKernel::applyTable(m_lut, raw->bitmap, m_normalized.bitmap, raw->getSize());
       In = &m_normalized;
     } else if (m_normalize) {
       // Tracking frame: the table of the whole image (the same as a full search's), applied only to the pixels the
       // matching of the regions reads (each grown by the window); the Eq. 7 sweep normalises the row it reads.
-      m_normalizer.computeLut(*raw, m_lut, 1);
+      m_normalizer.computeLut(*raw, m_lut, kHistogramStep);
       m_normalized.resize(raw->getHeight(), raw->getWidth());
       const int W = static_cast<int>(raw->getWidth()), H = static_cast<int>(raw->getHeight());
       const int w = static_cast<int>(m_match.getWindow());
@@ -261,11 +264,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
           continue;
         }
         for (int v = static_cast<int>(v0); v < static_cast<int>(v1); ++v) {
-          const unsigned char *src = (*raw)[v];
-          unsigned char *dst = m_normalized[v];
-          for (int u = static_cast<int>(u0); u < static_cast<int>(u1); ++u) {
-            dst[u] = m_lut[src[u]];
-          }
+          vpSSLLookupKernel::applyTable(m_lut, (*raw)[v] + static_cast<int>(u0), m_normalized[v] + static_cast<int>(u0),
+                                        static_cast<size_t>(u1 - u0));
         }
       }
       In = &m_normalized;
@@ -401,10 +401,10 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       const int W = static_cast<int>(raw->getWidth());
       m_sweepRow.resize(1, raw->getWidth());
       if (sv >= 0 && sv < static_cast<int>(raw->getHeight())) {
-        const unsigned char *src = (*raw)[sv];
-        unsigned char *dst = m_sweepRow[0];
-        for (int u = std::max(0, su); u < W; ++u) {
-          dst[u] = m_lut[src[u]];
+        const int first = std::max(0, su);
+        if (first < W) {
+          vpSSLLookupKernel::applyTable(m_lut, (*raw)[sv] + first, m_sweepRow[0] + first,
+                                        static_cast<size_t>(W - first));
         }
       }
       l.radiusEq7 = vpSSLRadiusEstimator::sweep(

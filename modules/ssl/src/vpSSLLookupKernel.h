@@ -1,0 +1,16 @@
+/*
+  Private interface of the SIMD grey-level table look-up (the brightness normalisation's table applied to an
+  image), implemented with Google Highway in vpSSLLookupKernel.cpp and picked at run time for the CPU.
+*/
+#ifndef VP_SSL_LOOKUP_KERNEL_H
+#define VP_SSL_LOOKUP_KERNEL_H
+
+#include <cstddef>
+#include <cstdint>
+
+namespace vpSSLLookupKernel {
+//! dst[i] = lut[src[i]] for i in [0, n); src and dst may be the same array, but must not overlap otherwise.
+void applyTable(const uint8_t lut[256], const uint8_t *src, uint8_t *dst, std::size_t n);
+} // namespace vpSSLLookupKernel
+
+#endif
