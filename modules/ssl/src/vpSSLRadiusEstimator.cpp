@@ -161,10 +161,8 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
   const unsigned char *bitmap = I.bitmap;
   const int width = static_cast<int>(I.getWidth()), lastU = width - 1, lastV = static_cast<int>(I.getHeight()) - 1;
   const double cd = kCos[d], sd = kSin[d], halfStep = 0.5 * m_step;
-  // The running integral and the previous sample are carried in variables rather than read back from the vectors
-  // (the same operations in the same order: the same values).
-  double integral = c[have > 0 ? have - 1 : 0];
-  float previous = have > 0 ? p[have - 1] : 0.f;
+  // The samples first, then their running integral: the samples are independent of each other and pipeline, the
+  // integral is a chain of additions (the same operations in the same order as in one loop: the same values).
   for (size_t i = have; i < want; ++i) {
     const double rho = static_cast<double>(i) * m_step;
     // bilinear(), with the row pointers computed rather than looked up.
@@ -176,14 +174,13 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
                         *r1 = bitmap + static_cast<std::ptrdiff_t>(v1) * width;
     const double top = (1. - fu) * r0[u0] + fu * r0[u1];
     const double bottom = (1. - fu) * r1[u0] + fu * r1[u1];
-    const float sample = static_cast<float>((1. - fv) * top + fv * bottom);
-    p[i] = sample;
-    if (i > 0) {
-      // Trapezoidal integral of the profile from 0 to rho.
-      integral = integral + halfStep * (previous + sample);
-      c[i] = integral;
-    }
-    previous = sample;
+    p[i] = static_cast<float>((1. - fv) * top + fv * bottom);
+  }
+  // Trapezoidal integral of the profile from 0 to rho.
+  double integral = c[have > 0 ? have - 1 : 0];
+  for (size_t i = std::max<size_t>(have, 1); i < want; ++i) {
+    integral = integral + halfStep * (p[i - 1] + p[i]);
+    c[i] = integral;
   }
 }
 
