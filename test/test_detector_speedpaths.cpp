@@ -7,6 +7,8 @@
     row): the landmarks, radiusEq7 included, are those of the whole-image normalisation;
   - the normalisation table is applied in SIMD (byte shuffles): the default matching map is the reference map of
     the image through the normaliser's table (from a histogram of one pixel in 16), on every SIMD target;
+  - a tracking frame re-reads each predicted landmark from its region's centre without matching, and matches the
+    regions whose landmark moved too far for that;
   - a tracked landmark with decimation is re-read from the decimated peak (no climb to the full-resolution
     maximum): its score is the full-resolution map at its centre, close to the full search's.
 */
@@ -248,18 +250,93 @@ TEST(DetectorSpeedPaths, MatchingMapIsZeroOutsideTheRegionsFromFrameToFrame)
       vpSSLDetector fresh;
       fresh.setNbThreads(1);
       fresh.setDecimation(decimation);
+      // The regions whose landmark was re-read from their centre are not matched (getMatchedRegions()): a fresh
+      // detector, which has no previous landmark, matches all of its regions.
+      const std::vector<vpRect> matched = detector.getMatchedRegions();
       if (k != 3) {
         fresh.setFullSearchPeriod(0);
-        fresh.setRegionsOfInterest(*sequence[k]);
+        fresh.setRegionsOfInterest(matched);
       }
-      fresh.detect(v.I);
+      if (k == 3 || !matched.empty()) {
+        fresh.detect(v.I);
+      }
       const vpImage<int> &M = detector.getMatchingMap(), &F = fresh.getMatchingMap();
-      ASSERT_EQ(M.getSize(), F.getSize());
       size_t different = 0;
-      for (unsigned int i = 0; i < M.getSize(); ++i) {
-        different += M.bitmap[i] != F.bitmap[i] ? 1 : 0;
+      if (k == 3 || !matched.empty()) {
+        ASSERT_EQ(M.getSize(), F.getSize());
+        for (unsigned int i = 0; i < M.getSize(); ++i) {
+          different += M.bitmap[i] != F.bitmap[i] ? 1 : 0;
+        }
+      } else {
+        for (unsigned int i = 0; i < M.getSize(); ++i) {
+          different += M.bitmap[i] != 0 ? 1 : 0;
+        }
       }
       EXPECT_EQ(different, 0u) << "decimation " << decimation << ", call " << k;
+    }
+  }
+}
+
+TEST(DetectorSpeedPaths, PredictedLandmarksAreReReadWithoutMatching)
+{
+  const View v = render(1.0);
+  for (unsigned int decimation : {1u, 2u}) {
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setDecimation(decimation);
+    ASSERT_TRUE(detector.detect(v.I));
+    const std::vector<vpSSLLandmark> full = detector.getLandmarks();
+    ASSERT_EQ(full.size(), 3u);
+    detector.setFullSearchPeriod(0);
+    detector.setRegionsOfInterest(roisAround(v.centres));
+    detector.detect(v.I);
+    EXPECT_TRUE(detector.getMatchedRegions().empty()) << "decimation " << decimation;
+    const vpImage<int> &M = detector.getMatchingMap();
+    size_t nonZero = 0;
+    for (unsigned int i = 0; i < M.getSize(); ++i) {
+      nonZero += M.bitmap[i] != 0 ? 1 : 0;
+    }
+    EXPECT_EQ(nonZero, 0u) << "nothing is matched when every landmark is re-read";
+    ASSERT_EQ(detector.getLandmarks().size(), full.size());
+    for (const vpSSLLandmark &l : full) {
+      bool same = false;
+      for (const vpSSLLandmark &k : detector.getLandmarks()) {
+        same = same || (std::hypot(k.u - l.u, k.v - l.v) < 0.01 && std::fabs(k.radius - l.radius) < 0.01 &&
+                        std::fabs(k.minorRadius - l.minorRadius) < 0.01 && std::fabs(k.score - l.score) < 0.05);
+      }
+      EXPECT_TRUE(same) << "landmark at " << l.u << ", " << l.v << " not re-read as the full search read it";
+    }
+    EXPECT_TRUE(detector.getTargetMatch().found);
+  }
+}
+
+TEST(DetectorSpeedPaths, LandmarksThatMovedFarFromThePredictionAreMatched)
+{
+  // The regions stay on the previous frame's landmarks while the target moves by 14 px: the re-reading from the
+  // regions' centres cannot reach them (+-3 px per symmetry step, and the rays must stay near the start), so the
+  // regions are matched and the landmarks found at their new places.
+  const View before = render(1.0);
+  View after;
+  const vpHomogeneousMatrix cMo(0.02 + 14. / 600., -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+  vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
+  renderer.setTarget(vpSSLTarget::ssl3a3());
+  renderer.render(cMo, after.I);
+  after.centres = renderer.projectLandmarks(cMo);
+  for (unsigned int decimation : {1u, 2u}) {
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setDecimation(decimation);
+    ASSERT_TRUE(detector.detect(before.I));
+    detector.setFullSearchPeriod(0);
+    detector.setRegionsOfInterest(roisAround(before.centres));
+    detector.detect(after.I);
+    EXPECT_FALSE(detector.getMatchedRegions().empty()) << "decimation " << decimation;
+    ASSERT_TRUE(detector.getTargetMatch().found) << "decimation " << decimation;
+    for (size_t k = 0; k < after.centres.size(); ++k) {
+      const vpSSLLandmark *l = detector.getMatchedLandmark(k);
+      ASSERT_NE(l, nullptr);
+      EXPECT_LT(std::hypot(l->u - after.centres[k].get_u(), l->v - after.centres[k].get_v()), 0.5)
+          << "decimation " << decimation << ", landmark " << k;
     }
   }
 }

@@ -172,7 +172,6 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     ++m_roiCalls;
     m_lastSearchWasFull = m_fullSearchPeriod > 0 && m_roiCalls % m_fullSearchPeriod == 0;
   }
-  const std::vector<vpRect> *rois = m_lastSearchWasFull ? &m_noRois : &m_rois;
   const double scale = m_upsample ? 2. : 1.;
   // Decimated matching (setDecimation()): candidates from the half-resolution map, rings read at full
   // resolution. The normalisation table comes from a sparse histogram of the whole image, so that a region
@@ -182,21 +181,54 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   // Whether only some pixels of the normalised image are up to date (m_lut holds the table then).
   bool partialNormalization = false;
   int maxValue = 0;
-  if (coarse) {
-    const unsigned char *lut = nullptr;
-    if (m_normalize) {
-      m_normalizer.computeLut(I, m_lut, kHistogramStep);
-      lut = m_lut;
-    } else {
-      for (int g = 0; g < 256; ++g) {
-        m_lut[g] = static_cast<unsigned char>(g);
-      }
+  if (m_upsample) {
+    upsample2(I, m_upsampled);
+    raw = &m_upsampled;
+  }
+  // One normalisation table for the frame, from a sparse histogram of the whole image: a region of interest is
+  // normalised exactly as in a full search, whichever pixels are normalised.
+  if (m_normalize) {
+    m_normalizer.computeLut(*raw, m_lut, kHistogramStep);
+  } else {
+    for (int g = 0; g < 256; ++g) {
+      m_lut[g] = static_cast<unsigned char>(g);
     }
+  }
+  m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
+  m_radiusEstimator.setPixelScale(scale);
+  // a_xi and b_xi of the full-resolution window, for Eq. 5 at single pixels (refinePeak(), scoreAt()).
+  for (unsigned int xi = 0; xi <= m_match.getWindow(); ++xi) {
+    m_offsetA[xi] = m_match.offsetSqrtP(xi);
+    m_offsetB[xi] = m_match.offsetP(xi);
+  }
+  m_refined.clear();
+  m_times.normalization = elapsedMs(t);
+  m_pendingRois.clear();
+  double reread = 0.; // ring reading of the predicted landmarks, counted with the other ring readings
+  if (!m_lastSearchWasFull) {
+    m_roiFilled.assign(m_rois.size(), 0);
+    rereadPredicted(*raw, scale);
+    reread = elapsedMs(t);
+  }
+  // Tracking frame: only the regions whose landmark was not re-read are matched (paper Sec. 4.1); a full search
+  // matches the whole image.
+  const std::vector<vpRect> *rois = m_lastSearchWasFull ? &m_noRois : &m_pendingRois;
+  const bool matching = m_lastSearchWasFull || !m_pendingRois.empty();
+  if (!matching) {
+    // Every region's landmark was re-read: nothing to match or search. The map keeps nothing of earlier regions.
+    if (coarse) {
+      m_decimated.resize(I.getHeight() / 2, I.getWidth() / 2);
+    }
+    matchRegions(coarse ? m_matchCoarse : m_match, coarse ? m_decimated : *raw, m_pendingRois);
+    m_peaks.clear();
+    m_times.normalization += elapsedMs(t);
+  } else if (coarse) {
+    const unsigned char *lut = m_normalize ? m_lut : nullptr;
     const int Wc = static_cast<int>(I.getWidth() / 2), Hc = static_cast<int>(I.getHeight() / 2);
     m_decimated.resize(static_cast<unsigned int>(Hc), static_cast<unsigned int>(Wc));
     const int wc = static_cast<int>(m_matchCoarse.getWindow());
     m_scaledRois.clear();
-    if (rois->empty()) {
+    if (m_lastSearchWasFull) {
       decimate2(I, lut, 0, 0, Wc, Hc, m_decimated);
     } else {
       // Pixel j of the decimated image is centred on pixel 2 j + 0.5 of the image.
@@ -215,8 +247,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       }
       rois = &m_scaledRois;
     }
-    m_times.normalization = elapsedMs(t);
-    if (rois->empty()) {
+    m_times.normalization += elapsedMs(t);
+    if (m_lastSearchWasFull) {
       m_matchCoarse.compute(m_decimated, m_map);
       m_mapAllWritten = true;
     } else {
@@ -233,8 +265,6 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     m_times.peaks = elapsedMs(t);
   } else {
     if (m_upsample) {
-      upsample2(I, m_upsampled);
-      raw = &m_upsampled;
       m_scaledRois.clear();
       for (const vpRect &r : *rois) {
         m_scaledRois.push_back(
@@ -243,15 +273,13 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       rois = &m_scaledRois;
     }
     In = raw;
-    if (m_normalize && rois->empty()) {
-      m_normalizer.computeLut(*raw, m_lut, kHistogramStep);
+    if (m_normalize && m_lastSearchWasFull) {
       m_normalized.resize(raw->getHeight(), raw->getWidth());
       vpSSLLookupKernel::applyTable(m_lut, raw->bitmap, m_normalized.bitmap, raw->getSize());
       In = &m_normalized;
     } else if (m_normalize) {
       // Tracking frame: the table of the whole image (the same as a full search's), applied only to the pixels the
       // matching of the regions reads (each grown by the window); the Eq. 7 sweep normalises the row it reads.
-      m_normalizer.computeLut(*raw, m_lut, kHistogramStep);
       m_normalized.resize(raw->getHeight(), raw->getWidth());
       const int W = static_cast<int>(raw->getWidth()), H = static_cast<int>(raw->getHeight());
       const int w = static_cast<int>(m_match.getWindow());
@@ -271,9 +299,9 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       In = &m_normalized;
       partialNormalization = true;
     }
-    m_times.normalization = elapsedMs(t);
+    m_times.normalization += elapsedMs(t);
 
-    if (rois->empty()) {
+    if (m_lastSearchWasFull) {
       m_match.compute(*In, m_map);
       m_mapAllWritten = true;
     } else {
@@ -287,19 +315,6 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     m_times.peaks = elapsedMs(t);
   }
 
-  m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
-  m_radiusEstimator.setPixelScale(scale);
-  if (coarse) {
-    const unsigned int w = m_match.getWindow();
-    for (unsigned int xi = 0; xi <= w; ++xi) {
-      m_offsetA[xi] = m_match.offsetSqrtP(xi);
-      m_offsetB[xi] = m_match.offsetP(xi);
-    }
-    m_refined.clear();
-  }
-  if (!m_lastSearchWasFull) {
-    m_roiFilled.assign(m_rois.size(), 0);
-  }
   // The white paper just outside the outermost black ring continues the pattern by one ring (out to
   // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
   const double margin = 1. / std::sqrt(getTarget().getP());
@@ -368,11 +383,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       vpSSLLandmark tracked = l;
       read = m_radiusEstimator.estimate(*raw, tracked, scaled);
       if (read && coarse) {
-        const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
-        const int cu = std::min(W - 1, std::max(0, static_cast<int>(std::lround(tracked.u))));
-        const int cv = std::min(H - 1, std::max(0, static_cast<int>(std::lround(tracked.v))));
-        tracked.score =
-            std::max(0., std::min(1., static_cast<double>(fullResolutionMatch(I, cu, cv)) / m_match.getMaxValue()));
+        tracked.score = scoreAt(I, tracked.u, tracked.v);
       }
       if (read) {
         l = tracked;
@@ -394,63 +405,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
         continue;
       }
     }
-    const int su = static_cast<int>(std::lround(l.u)), sv = static_cast<int>(std::lround(l.v));
-    const unsigned int maxWindow = static_cast<unsigned int>(1.5 * scale * m_maxRadius);
-    if (coarse || partialNormalization) {
-      // The sweep runs along +x on the normalised row of the centre: only that row is normalised.
-      const int W = static_cast<int>(raw->getWidth());
-      m_sweepRow.resize(1, raw->getWidth());
-      if (sv >= 0 && sv < static_cast<int>(raw->getHeight())) {
-        const int first = std::max(0, su);
-        if (first < W) {
-          vpSSLLookupKernel::applyTable(m_lut, (*raw)[sv] + first, m_sweepRow[0] + first,
-                                        static_cast<size_t>(W - first));
-        }
-      }
-      l.radiusEq7 = vpSSLRadiusEstimator::sweep(
-          m_sweepRow, m_match, su, sv >= 0 && sv < static_cast<int>(raw->getHeight()) ? 0 : -1, maxWindow, m_sweep);
-    } else {
-      l.radiusEq7 = vpSSLRadiusEstimator::sweep(*In, m_match, su, sv, maxWindow, m_sweep);
-    }
-    if (m_upsample) {
-      l.u = 0.5 * (l.u + 0.5) - 0.5;
-      l.v = 0.5 * (l.v + 0.5) - 0.5;
-      l.radius *= 0.5;
-      l.minorRadius *= 0.5;
-      l.radiusEq7 *= 0.5;
-      for (double &r : l.directionalRadius) {
-        r *= 0.5;
-      }
-    }
-    // Two peaks on the same landmark: keep the stronger one (peaks come strongest first).
-    bool duplicate = false;
-    for (const vpSSLLandmark &k : m_landmarks) {
-      if (std::hypot(k.u - l.u, k.v - l.v) < 0.5 * std::min(k.minorRadius, l.minorRadius)) {
-        duplicate = true;
-        break;
-      }
-    }
-    if (duplicate) {
-      continue;
-    }
-    m_landmarks.push_back(l);
-    if (!m_lastSearchWasFull) {
-      // Regions may overlap (landmarks close together in the image): the landmark fills the region it was
-      // predicted in, the one whose centre is nearest.
-      size_t filled = m_rois.size();
-      double nearestDistance = 0.;
-      for (size_t k = 0; k < m_rois.size(); ++k) {
-        const vpRect &r = m_rois[k];
-        const double d = std::hypot(r.getLeft() + 0.5 * r.getWidth() - l.u, r.getTop() + 0.5 * r.getHeight() - l.v);
-        if (r.isInside(vpImagePoint(l.v, l.u)) && (filled == m_rois.size() || d < nearestDistance)) {
-          filled = k;
-          nearestDistance = d;
-        }
-      }
-      if (filled < m_rois.size()) {
-        m_roiFilled[filled] = 1;
-      }
-    }
+    keepLandmark(l, *raw, *In, coarse || partialNormalization, scale);
   }
   // Stable insertion sort, best score first: a handful of landmarks, and std::stable_sort would allocate
   // a buffer every frame.
@@ -459,7 +414,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       std::swap(m_landmarks[j - 1], m_landmarks[j]);
     }
   }
-  m_times.radius = elapsedMs(t);
+  m_times.radius = reread + elapsedMs(t);
   // Storage reused: no allocation once it has grown to the number of landmarks in view.
   m_previous.assign(m_landmarks.begin(), m_landmarks.end());
 
@@ -469,6 +424,118 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   fillObjects();
   m_times.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return !m_landmarks.empty();
+}
+
+bool vpSSLDetector::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw,
+                                 const vpImage<unsigned char> &normalized, bool rowOnly, double scale)
+{
+  const int su = static_cast<int>(std::lround(l.u)), sv = static_cast<int>(std::lround(l.v));
+  const unsigned int maxWindow = static_cast<unsigned int>(1.5 * scale * m_maxRadius);
+  if (rowOnly) {
+    // The sweep runs along +x on the normalised row of the centre: only that row is normalised.
+    const int W = static_cast<int>(raw.getWidth());
+    m_sweepRow.resize(1, raw.getWidth());
+    const bool inside = sv >= 0 && sv < static_cast<int>(raw.getHeight());
+    if (inside) {
+      const int first = std::max(0, su);
+      if (first < W) {
+        vpSSLLookupKernel::applyTable(m_lut, raw[sv] + first, m_sweepRow[0] + first, static_cast<size_t>(W - first));
+      }
+    }
+    l.radiusEq7 = vpSSLRadiusEstimator::sweep(m_sweepRow, m_match, su, inside ? 0 : -1, maxWindow, m_sweep);
+  } else {
+    l.radiusEq7 = vpSSLRadiusEstimator::sweep(normalized, m_match, su, sv, maxWindow, m_sweep);
+  }
+  if (m_upsample) {
+    l.u = 0.5 * (l.u + 0.5) - 0.5;
+    l.v = 0.5 * (l.v + 0.5) - 0.5;
+    l.radius *= 0.5;
+    l.minorRadius *= 0.5;
+    l.radiusEq7 *= 0.5;
+    for (double &r : l.directionalRadius) {
+      r *= 0.5;
+    }
+  }
+  // Two peaks on the same landmark: keep the stronger one (peaks come strongest first).
+  for (const vpSSLLandmark &k : m_landmarks) {
+    if (std::hypot(k.u - l.u, k.v - l.v) < 0.5 * std::min(k.minorRadius, l.minorRadius)) {
+      return false;
+    }
+  }
+  m_landmarks.push_back(l);
+  if (!m_lastSearchWasFull) {
+    // Regions may overlap (landmarks close together in the image): the landmark fills the region it was
+    // predicted in, the one whose centre is nearest.
+    size_t filled = m_rois.size();
+    double nearestDistance = 0.;
+    for (size_t k = 0; k < m_rois.size(); ++k) {
+      const vpRect &r = m_rois[k];
+      const double d = std::hypot(r.getLeft() + 0.5 * r.getWidth() - l.u, r.getTop() + 0.5 * r.getHeight() - l.v);
+      if (r.isInside(vpImagePoint(l.v, l.u)) && (filled == m_rois.size() || d < nearestDistance)) {
+        filled = k;
+        nearestDistance = d;
+      }
+    }
+    if (filled < m_rois.size()) {
+      m_roiFilled[filled] = 1;
+    }
+  }
+  return true;
+}
+
+void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double scale)
+{
+  // A region of interest is centred on a predicted landmark (paper Sec. 4.1). When a landmark of the previous
+  // frame lies near that prediction, it is re-read straight from there: symmetry centring (+-3 px per step),
+  // then its rings around its previous ellipse. This needs no matching at all, the dearest stage of a tracking
+  // frame; a region whose landmark moved further, changed size or is not read is matched as in the paper.
+  for (size_t k = 0; k < m_rois.size(); ++k) {
+    const vpRect &r = m_rois[k];
+    const double cu = r.getLeft() + 0.5 * r.getWidth(), cv = r.getTop() + 0.5 * r.getHeight();
+    const vpSSLLandmark *prior = nullptr;
+    double bestDistance = 0.;
+    for (const vpSSLLandmark &p : m_previous) {
+      const double d = std::hypot(p.u - cu, p.v - cv);
+      if (d < 0.5 * p.minorRadius && (prior == nullptr || d < bestDistance)) {
+        prior = &p;
+        bestDistance = d;
+      }
+    }
+    if (prior == nullptr || m_roiFilled[k]) {
+      m_pendingRois.push_back(r);
+      continue;
+    }
+    vpSSLLandmark scaled = *prior, l;
+    l.u = cu;
+    l.v = cv;
+    if (m_upsample) {
+      scaled.u = 2. * scaled.u + 0.5;
+      scaled.v = 2. * scaled.v + 0.5;
+      scaled.radius *= 2.;
+      scaled.minorRadius *= 2.;
+      l.u = 2. * l.u + 0.5;
+      l.v = 2. * l.v + 0.5;
+    }
+    if (!m_radiusEstimator.estimate(raw, l, scaled)) {
+      m_pendingRois.push_back(r);
+      continue;
+    }
+    l.score = scoreAt(raw, l.u, l.v);
+    if (keepLandmark(l, raw, raw, true, scale)) {
+      m_roiFilled[k] = 1;
+    } else {
+      m_pendingRois.push_back(r);
+    }
+  }
+}
+
+double vpSSLDetector::scoreAt(const vpImage<unsigned char> &I, double u, double v) const
+{
+  // The map's value (Eq. 5, full resolution) at the centre read, over its largest value.
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  const int cu = std::min(W - 1, std::max(0, static_cast<int>(std::lround(u))));
+  const int cv = std::min(H - 1, std::max(0, static_cast<int>(std::lround(v))));
+  return std::max(0., std::min(1., static_cast<double>(fullResolutionMatch(I, cu, cv)) / m_match.getMaxValue()));
 }
 
 void vpSSLDetector::matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,

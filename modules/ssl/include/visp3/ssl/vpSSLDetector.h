@@ -117,15 +117,25 @@ public:
   //! Whether the small-landmark mode is on.
   bool getSmallLandmarkMode() const { return m_upsample; }
   /*!
-    Restricts the next detections to these rectangles (empty: whole image). Landmarks whose centre
-    lies inside a rectangle are found as long as the rectangle extends w around them. In these tracking
-    frames only the pixels the regions' matching reads are normalised (with the table of the whole image, so
-    that the map is the one a full search gives there), and a landmark of the previous frame is re-read around
-    its previous ellipse; with setDecimation(2) that re-reading starts from the decimated peak, and the
-    landmark's score is the full-resolution map at its centre (a full search reports the maximum of the map
-    nearby, which may be a little higher).
+    Restricts the next detections to these rectangles (empty: whole image), each centred on a predicted
+    landmark (paper Sec. 4.1: vpSSLTracker centres them on its prediction). In these tracking frames:
+    - a landmark of the previous frame whose centre lies within half its smaller semi-axis of a rectangle's
+      centre is first re-read straight from that centre (symmetry centring, then its rings around its previous
+      ellipse), without any matching; its score is then the full-resolution map at its centre (a full search
+      reports the maximum of the map nearby, which may be a little higher);
+    - the other rectangles, and those where that re-reading fails, are matched and searched for peaks. Landmarks
+      whose centre lies inside such a rectangle are found as long as the rectangle extends w around them. Only
+      the pixels this matching reads are normalised (with the table of the whole image, so that the map is the
+      one a full search gives there), and a landmark of the previous frame near a peak is re-read around its
+      previous ellipse; with setDecimation(2) that re-reading starts from the decimated peak.
+    getMatchingMap() is 0 outside the rectangles matched.
   */
   void setRegionsOfInterest(const std::vector<vpRect> &rois);
+  /*!
+    Regions of interest that the last tracking frame matched: those whose landmark was not re-read from their
+    centre (setRegionsOfInterest()). Empty after a full search.
+  */
+  const std::vector<vpRect> &getMatchedRegions() const { return m_pendingRois; }
   /*!
     Full-search period n of the tracking mode (default 10, paper Sec. 4.1): while regions of interest
     are set, every n-th detect() call (the n-th, 2n-th, ... since the regions were first set) searches
@@ -151,7 +161,7 @@ public:
   //! Stage times of the last detection.
   const vpSSLDetectorTimes &getTimes() const { return m_times; }
   /*!
-    Matching map of the last detection (zero outside the regions of interest), at the resolution it was
+    Matching map of the last detection (zero outside the regions of interest matched), at the resolution it was
     computed: half the image's with decimation 2 (setDecimation()), twice in the small-landmark mode.
   */
   const vpImage<int> &getMatchingMap() const { return m_map; }
@@ -181,6 +191,14 @@ private:
   void normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach);
   int crossMatch(int u, int v) const;
   bool refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid);
+  // Eq. 7 sweep, back to image pixels, duplicate check; adds the landmark and fills its region. \e rowOnly: only
+  // the sweep's row is normalised (else \e normalized is the whole normalised image).
+  bool keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw, const vpImage<unsigned char> &normalized,
+                    bool rowOnly, double scale);
+  // Tracking frame: re-reads each region's previous landmark from the region's centre; the regions left are
+  // listed in m_pendingRois.
+  void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
+  double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
 
   vpSSLBrightnessNormalizer m_normalizer;
   vpSSLMatchingFunction m_match;
@@ -195,7 +213,8 @@ private:
   double m_maxRadius;
   double m_threshold;
   std::vector<vpRect> m_rois;
-  std::vector<vpRect> m_noRois; // always empty: the whole image
+  std::vector<vpRect> m_noRois;      // always empty: the whole image
+  std::vector<vpRect> m_pendingRois; // regions of this tracking frame whose landmark was not re-read directly
   unsigned int m_fullSearchPeriod;
   unsigned long m_roiCalls; // detect() calls with regions of interest since they were set
   bool m_lastSearchWasFull;
