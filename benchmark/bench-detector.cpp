@@ -8,7 +8,9 @@
   regions of interest around the landmarks at 640x480 (the paper's tracking mode); the reference matching
   function alone at 640x480 (the scalar loops the SIMD kernel replaces); vpDetectorAprilTag 36h11 on one
   thread with quad decimate 1 and 2; cv::aruco::detectMarkers with DICT_APRILTAG_36h11 on one thread; and
-  SSL and AprilTag on ViSP's real 640x480 AprilTag photograph (no landmark: the clutter case).
+  SSL and AprilTag on ViSP's real 640x480 AprilTag photograph (no landmark: the clutter case); and SSL and
+  AprilTag on the same 640x480 views under water (vpSSLWaterModel "clear", open water behind the sheet, the
+  sensor's noise), the frames the detectors meet on a vehicle.
 
     ./bench-detector --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
@@ -36,6 +38,7 @@
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl/vpSSLWaterModel.h>
 
 namespace {
 // 1 m in front of the camera, turned by a few degrees about each axis: the whole A3 sheet in view.
@@ -74,6 +77,27 @@ const Frames &frames(unsigned int width, unsigned int height)
   // The tag sheet is rendered at the pose of its tag frame (vpSSLAprilTagSheet).
   renderer.setAprilTagSheet(vpSSLAprilTagSheet::a3(0));
   renderer.render(viewPose() * vpSSLAprilTagSheet::getSheetToTag(), f.tag);
+  return f;
+}
+
+// The 640x480 views of frames() through clear water (attenuation, backscatter, blur, sensor noise).
+const Frames &underwaterFrames()
+{
+  static Frames f;
+  if (f.ssl.getSize() > 0) {
+    return f;
+  }
+  const unsigned int width = 640, height = 480;
+  const vpCameraParameters cam = camera(width, height);
+  vpSSLRenderer renderer(cam, width, height);
+  const vpSSLWaterModel water = vpSSLWaterModel::preset("clear");
+  vpImage<float> reflectance, range;
+  renderer.setTarget(vpSSLTarget::ssl3a3());
+  renderer.render(viewPose(), reflectance, range);
+  water.apply(reflectance, range, cam, 0., 1, f.ssl);
+  renderer.setAprilTagSheet(vpSSLAprilTagSheet::a3(0));
+  renderer.render(viewPose() * vpSSLAprilTagSheet::getSheetToTag(), reflectance, range);
+  water.apply(reflectance, range, cam, 0., 1, f.tag);
   return f;
 }
 
@@ -204,6 +228,36 @@ void BM_AprilTagImage(benchmark::State &state)
            [&] { benchmark::DoNotOptimize(detector.detect(I)); });
 }
 
+// range: 0 SSL, 1 SSL with decimation 2, 2 AprilTag decimate 2, 3 AprilTag decimate 1; on the underwater views.
+void BM_Underwater(benchmark::State &state)
+{
+  const Frames &f = underwaterFrames();
+  const int which = static_cast<int>(state.range(0));
+  if (which < 2) {
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setDecimation(which == 0 ? 1 : 2);
+    if (!detector.detect(f.ssl) || !detector.getTargetMatch().found) {
+      state.SkipWithError("ssl3-a3 not identified in the underwater frame");
+      return;
+    }
+    timeLoop(state,
+             std::string("SSL full frame 640x480 1 thread") + (which == 0 ? "" : ", decimation 2") + ", underwater",
+             [&] { detector.detect(f.ssl); });
+    return;
+  }
+  vpDetectorAprilTag detector(vpDetectorAprilTag::TAG_36h11);
+  detector.setAprilTagNbThreads(1);
+  detector.setAprilTagQuadDecimate(which == 2 ? 2.f : 1.f);
+  vpImage<unsigned char> I = f.tag;
+  if (!detector.detect(I)) {
+    state.SkipWithError("AprilTag not detected in the underwater frame");
+    return;
+  }
+  timeLoop(state, std::string("AprilTag 36h11 decimate ") + (which == 2 ? "2" : "1") + " 640x480, underwater",
+           [&] { benchmark::DoNotOptimize(detector.detect(I)); });
+}
+
 void BM_ArUco(benchmark::State &state)
 {
   const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
@@ -262,6 +316,7 @@ BENCHMARK(BM_SSL)->Apply(sslArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ReferenceMatching)->Args({640, 480})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AprilTag)->Apply(aprilTagArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AprilTagImage)->Arg(-1)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Underwater)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ArUco)->Apply(sizeArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 double median(std::vector<double> v)
@@ -276,7 +331,8 @@ double median(std::vector<double> v)
 // The paper's Table 1 (frames per second), where it has the same case.
 std::string paperFps(const std::string &row)
 {
-  if (row.rfind("SSL full frame 640x480 1 thread", 0) == 0 && row.find("AprilTag.pgm") == std::string::npos) {
+  if (row.rfind("SSL full frame 640x480 1 thread", 0) == 0 && row.find("AprilTag.pgm") == std::string::npos &&
+      row.find("underwater") == std::string::npos) {
     return "2.1 (P-M) / 2.8 (P-IV)";
   }
   if (row.rfind("SSL full frame 320x240 1 thread", 0) == 0) {
@@ -303,7 +359,9 @@ void printTable()
       if (entry.first.find(size) == std::string::npos) {
         continue;
       }
-      const std::string suffix = entry.first.find("AprilTag.pgm") != std::string::npos ? ", AprilTag.pgm" : "";
+      const std::string suffix = entry.first.find("AprilTag.pgm") != std::string::npos ? ", AprilTag.pgm"
+                                 : entry.first.find("underwater") != std::string::npos ? ", underwater"
+                                                                                       : "";
       auto at = samples().find("AprilTag 36h11 decimate 2 " + size + suffix);
       if (at != samples().end() && ms > 0.) {
         char buf[32];
