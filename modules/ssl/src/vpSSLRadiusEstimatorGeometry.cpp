@@ -6,10 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include "vpSSLMatchingKernel.h"
 #include "vpSSLRadiusEstimatorInternal.h"
+#include "vpSSLSymmetryKernel.h"
 
 using namespace vpSSLRadiusEstimatorInternal;
 
@@ -229,139 +228,12 @@ bool vpSSLRadiusEstimator::refineCentre(const vpImage<unsigned char> &I, double 
 
 bool vpSSLRadiusEstimator::symmetryCentre(const vpImage<unsigned char> &I, double &u, double &v, double &asymmetry)
 {
-  // The landmark is point-symmetric, and stays so under any affine view, symmetric blur and noise: its
-  // centre minimises the difference between the image and its half-turn about it. Centres on the
-  // half-pixel grid pair whole pixels, so no interpolation is needed.
+  // The disc compared with its half-turn, and the search, are vpSSLSymmetryKernel's (SIMD, all the centres of the
+  // window at once).
   const int radius = static_cast<int>(std::lround(kSymmetryRadius * m_pixelScale));
-  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
-  const int reach = 6; // half pixels searched either way
-  const int cu = static_cast<int>(std::lround(2. * u)), cv = static_cast<int>(std::lround(2. * v));
-  if (cu - reach < 2 * radius || cv - reach < 2 * radius || cu + reach > 2 * (W - 1 - radius) ||
-      cv + reach > 2 * (H - 1 - radius)) {
-    asymmetry = 0.;
-    return false; // too close to the border to compare both halves: keep the peak
-  }
-  // Variance of the disc about pixel (pu, pv); n receives its number of pixels.
-  auto discVariance = [&](int pu, int pv, double &sumOut, int &n) {
-    double sum = 0., sum2 = 0.;
-    n = 0;
-    for (int dy = -radius; dy <= radius; ++dy) {
-      const unsigned char *row = I[pv + dy];
-      for (int dx = -radius; dx <= radius; ++dx) {
-        if (dx * dx + dy * dy <= radius * radius) {
-          const double g = row[pu + dx];
-          sum += g;
-          sum2 += g * g;
-          ++n;
-        }
-      }
-    }
-    sumOut = sum;
-    return sum2 / n - (sum / n) * (sum / n);
-  };
-  // Pixels p and q with p + q = 2 c, c = (su, sv) / 2: p = (su >> 1, sv >> 1) + (dx, dy) and
-  // q = (su - p.u, sv - p.v). Half the disc (dy > 0, or dy = 0 and dx > 0) pairs every pixel once: row dy
-  // of it spans dx in [m_symmetryOffsets[dy], rx], rx = m_symmetryOffsets[radius + 1 + dy].
   if (m_symmetryRadius != radius) {
-    m_symmetryOffsets.assign(2 * (radius + 1), 0);
-    for (int dy = 0; dy <= radius; ++dy) {
-      int rx = 0;
-      while ((rx + 1) * (rx + 1) + dy * dy <= radius * radius) {
-        ++rx;
-      }
-      m_symmetryOffsets[dy] = dy == 0 ? 1 : -rx;
-      m_symmetryOffsets[radius + 1 + dy] = rx;
-    }
+    vpSSLSymmetryKernel::halfDisc(radius, m_symmetryOffsets);
     m_symmetryRadius = radius;
   }
-  const int *rowFirst = m_symmetryOffsets.data(), *rowLast = rowFirst + radius + 1;
-  // Both halves are copied: p = (su >> 1, sv >> 1) + (dx, dy) as is, q - (dx, dy) turned by half a turn (it runs
-  // backwards through the image), so that every row of the half disc is two contiguous byte runs compared in SIMD
-  // (vpSSLMatchingKernel::squaredDifferenceRows()). The copies cover every centre of the search window: p in
-  // [pu0, pu1] x [pv0, pv1] (p = floor(s / 2)), q in [qu0, qu1] x [qv0, qv1] (q = ceil(s / 2)); their rows are
-  // padded for the vector loads past a row's end.
-  const int pu0 = (cu - reach) >> 1, pv0 = (cv - reach) >> 1, pu1 = (cu + reach) >> 1, pv1 = (cv + reach) >> 1;
-  const int qu0 = (cu - reach + 1) >> 1, qv0 = (cv - reach + 1) >> 1;
-  const int qu1 = (cu + reach + 1) >> 1, qv1 = (cv + reach + 1) >> 1;
-  const int kPad = 64;
-  const int pw = std::max(pu1 - pu0, qu1 - qu0) + 1 + 2 * radius + kPad;
-  const int phP = pv1 - pv0 + 1 + radius, phQ = qv1 - qv0 + 1 + radius;
-  m_symmetryPatch.resize(static_cast<size_t>(pw) * (phP + phQ + 1));
-  unsigned char *patchP = m_symmetryPatch.data(), *patchQ = patchP + static_cast<size_t>(pw) * phP;
-  // patchP(y, x) = I(pv0 + y, pu0 - radius + x); patchQ(y, x) = I(qv1 - y, qu1 + radius - x), so that
-  // I(q.v - dy, q.u - dx) is patchQ(qv1 - q.v + dy, qu1 + radius - q.u + dx).
-  for (int y = 0; y < phP; ++y) {
-    const unsigned char *src = I[pv0 + y] + pu0 - radius;
-    std::copy(src, src + pu1 - pu0 + 1 + 2 * radius, patchP + static_cast<size_t>(y) * pw);
-  }
-  for (int y = 0; y < phQ; ++y) {
-    const unsigned char *src = I[qv1 - y] + qu1 + radius;
-    unsigned char *dst = patchQ + static_cast<size_t>(y) * pw;
-    for (int x = 0; x <= qu1 - qu0 + 2 * radius; ++x) {
-      dst[x] = src[-x];
-    }
-  }
-  // Sum of squared differences (exact in integers) about the centre (su, sv) / 2, given up as soon as it
-  // exceeds \e bound (returns bound + 1 then): only the minimum and its neighbours are needed. Where it is
-  // given up does not matter: a value above the bound is never the minimum.
-  auto energy = [&](int su, int sv, long bound) {
-    const int pu = su >> 1, pv = sv >> 1, qu = (su >> 1) + (su & 1), qv = (sv >> 1) + (sv & 1);
-    const unsigned char *p = patchP + static_cast<long>(pv - pv0) * pw + (pu - pu0 + radius);
-    const unsigned char *q = patchQ + static_cast<long>(qv1 - qv) * pw + (qu1 + radius - qu);
-    return vpSSLMatchingKernel::squaredDifferenceRows(p, pw, q, pw, rowFirst, rowLast, radius + 1, bound);
-  };
-  // The minimum over the search window, the first in row-major order on ties, whatever the order of evaluation.
-  // The peak's own position is the likeliest minimum, and its neighbours the next likeliest: evaluated first
-  // (nearest first), they let most others be given up early.
-  if (m_symmetryOrder.empty()) {
-    for (int j = -reach; j <= reach; ++j) {
-      for (int i = -reach; i <= reach; ++i) {
-        if (i != 0 || j != 0) {
-          m_symmetryOrder.push_back((j + reach) * (2 * reach + 1) + (i + reach));
-        }
-      }
-    }
-    // Nearest first, row-major among equals (std::sort with a total order: std::stable_sort would take a buffer).
-    std::sort(m_symmetryOrder.begin(), m_symmetryOrder.end(), [&](int a, int b) {
-      const int ai = a % (2 * reach + 1) - reach, aj = a / (2 * reach + 1) - reach;
-      const int bi = b % (2 * reach + 1) - reach, bj = b / (2 * reach + 1) - reach;
-      const int da = ai * ai + aj * aj, db = bi * bi + bj * bj;
-      return da < db || (da == db && a < b);
-    });
-  }
-  const long unbounded = std::numeric_limits<long>::max() - 1;
-  long bestE = energy(cu, cv, unbounded);
-  int bi = 0, bj = 0;
-  for (const int k : m_symmetryOrder) {
-    const int i = k % (2 * reach + 1) - reach, j = k / (2 * reach + 1) - reach;
-    const long e = energy(cu + i, cv + j, bestE);
-    if (e < bestE || (e == bestE && (j < bj || (j == bj && i < bi)))) {
-      bestE = e;
-      bi = i;
-      bj = j;
-    }
-  }
-  auto E = [&](int i, int j) { return static_cast<double>(energy(cu + i, cv + j, unbounded)); };
-  double du = 0., dv = 0.;
-  const double b = static_cast<double>(bestE);
-  if (bi > -reach && bi < reach) {
-    const double a = E(bi - 1, bj), c = E(bi + 1, bj);
-    const double den = a - 2. * b + c;
-    du = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
-  }
-  if (bj > -reach && bj < reach) {
-    const double a = E(bi, bj - 1), c = E(bi, bj + 1);
-    const double den = a - 2. * b + c;
-    dv = den > 0. ? std::max(-0.5, std::min(0.5, 0.5 * (a - c) / den)) : 0.;
-  }
-  u = 0.5 * (cu + bi + du);
-  v = 0.5 * (cv + bj + dv);
-  // Residual relative to the disc's own contrast: 0 for a perfectly symmetric pattern, about 1 for clutter.
-  double sum = 0.;
-  int n = 0;
-  const double variance = discVariance((cu + bi) >> 1, (cv + bj) >> 1, sum, n);
-  // A nearly flat disc (the innermost rings of a large landmark blurred by water and lens into a grey
-  // spot) says nothing either way: its residual is sensor noise. Only a contrasted disc is judged.
-  asymmetry = variance < kFlatVariance ? 0. : b / (0.5 * n * 2. * variance);
-  return true;
+  return vpSSLSymmetryKernel::centre(I, radius, m_symmetryOffsets, kFlatVariance, m_symmetryPatch, u, v, asymmetry);
 }

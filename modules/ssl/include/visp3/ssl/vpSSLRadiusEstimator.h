@@ -5,6 +5,7 @@
 #ifndef VP_SSL_RADIUS_ESTIMATOR_H
 #define VP_SSL_RADIUS_ESTIMATOR_H
 
+#include <cstdint>
 #include <vector>
 
 #include <visp3/core/vpImage.h>
@@ -124,12 +125,11 @@ private:
   bool m_levelZeroOnly = false;  // tracked re-reading: only the previous level is searched
   bool m_keepCandidates = false; // selectRadii() takes the rays' candidates of the previous call as they are
   double m_fullGridMin = 0., m_fullGridMax = 0.;
-  // Row extents of the half disc compared with its half-turn (symmetryCentre()), for this radius; the
-  // neighbourhood turned by half a turn; the order in which the search window is evaluated.
+  // Row extents of the half disc compared with its half-turn (symmetryCentre()), for this radius; the copies of
+  // the search window's neighbourhood that the comparison reads.
   std::vector<int> m_symmetryOffsets;
   int m_symmetryRadius = -1;
-  std::vector<unsigned char> m_symmetryPatch;
-  std::vector<int> m_symmetryOrder;
+  std::vector<int16_t> m_symmetryPatch;
 };
 
 #endif
