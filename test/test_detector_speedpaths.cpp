@@ -1,8 +1,8 @@
 /*
   The fast paths of vpSSLDetector (issue 4, fourth round) give the readings of the plain ones:
-  - the symmetry centring's SIMD kernel (vpSSLMatchingKernel::squaredDifferenceRows()) gives the same landmarks,
-    bit for bit, on every SIMD target compiled in, for the full-resolution, decimated and small-landmark modes,
-    full frames and tracking frames;
+  - the symmetry centring's SIMD kernel (vpSSLSymmetryKernel: every centre of the search in one pass) gives the
+    same landmarks, bit for bit, on every SIMD target compiled in, for the full-resolution, decimated and
+    small-landmark modes, full frames and tracking frames;
   - a tracking frame without decimation normalises only the pixels its regions read (and the Eq. 7 sweep its
     row): the landmarks, radiusEq7 included, are those of the whole-image normalisation;
   - the normalisation table is applied in SIMD (byte shuffles): the default matching map is the reference map of
