@@ -35,10 +35,18 @@ struct Params
   int height;
   int window;   // w in [2, kMaxWindow]
   int32_t *out; // the map M, row-major, width x height
-  // offsets[dir][xi] = {xi, a_xi, b_xi} steps along direction dir (in bytes of the padded copy), with
-  // a_xi = floor(sqrt(p) xi + 1/2) and b_xi = floor(p xi + 1/2).
+  // offsets[dir][xi] = {xi, a_xi, b_xi} steps along direction dir (in bytes of the padded copy: steps 1, -1,
+  // stride, -stride), with a_xi = floor(sqrt(p) xi + 1/2) and b_xi = floor(p xi + 1/2). The kernel relies on
+  // that form (its plan, cached per thread, is keyed on window, stride and offsets[kPlusX] only).
   std::ptrdiff_t offsets[4][kMaxWindow + 1][3];
 };
+
+/*
+  Right padding of a padded row beyond the window: two of the widest vectors Highway may use (2048-bit SVE), so
+  that a whole block of pixels past the last one still reads the row. The shared horizontal rows of the kernel
+  read up to 2 N + 2 w bytes past the last pixel and are only used when that fits.
+*/
+constexpr std::ptrdiff_t kRightPadBytes = 2 * 256;
 
 //! Left padding (bytes) of a padded row: at least the window, rounded to 64 bytes.
 std::ptrdiff_t leftPad(int window);
