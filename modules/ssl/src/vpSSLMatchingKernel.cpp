@@ -503,41 +503,6 @@ void MatchSpanImpl(const Params &P, int v, int u0, int u1)
 
 #endif // HWY_TARGET == HWY_SCALAR
 
-// Symmetry centring (vpSSLRadiusEstimator): differences in 16-bit lanes (one vector holds a row of the disc of
-// radius 8 on AVX-512), squared and summed pairwise into 32-bit lanes (a disc of radius 16 sums at most
-// 400 * 255^2 < 2^31).
-long SquaredDifferenceRowsImpl(const uint8_t *a, std::ptrdiff_t strideA, const uint8_t *b, std::ptrdiff_t strideB,
-                               const int *first, const int *last, int nbRows, long bound)
-{
-  // At most 32 lanes (32 bytes loaded per row step), whatever the target, so that the caller's 64 bytes of padding
-  // past each row are enough even for the widest (SVE) vectors.
-  const hn::CappedTag<int16_t, 32> d16;
-  const hn::RepartitionToWide<decltype(d16)> d32;
-  const hn::Rebind<uint8_t, decltype(d16)> d8;
-  const int N = static_cast<int>(hn::Lanes(d16));
-  auto sum0 = hn::Zero(d32), sum1 = hn::Zero(d32);
-  long e = 0;
-  for (int r = 0; r < nbRows; ++r) {
-    const uint8_t *pa = a + r * strideA + first[r], *pb = b + r * strideB + first[r];
-    const int n = last[r] - first[r] + 1;
-    for (int x = 0; x < n; x += N) {
-      const auto va = hn::BitCast(d16, hn::PromoteTo(hn::RebindToUnsigned<decltype(d16)>(), hn::LoadU(d8, pa + x)));
-      const auto vb = hn::BitCast(d16, hn::PromoteTo(hn::RebindToUnsigned<decltype(d16)>(), hn::LoadU(d8, pb + x)));
-      const auto diff = hn::IfThenElseZero(hn::FirstN(d16, static_cast<size_t>(n - x)), hn::Sub(va, vb));
-      sum0 = hn::ReorderWidenMulAccumulate(d32, diff, diff, sum0, sum1);
-    }
-    // The horizontal sum costs a few steps: the bound is checked every other row (where does not matter: a sum
-    // above the bound is never the minimum).
-    if ((r & 1) == 1 || r + 1 == nbRows) {
-      e = static_cast<long>(hn::GetLane(hn::SumOfLanes(d32, hn::Add(sum0, sum1))));
-      if (e > bound) {
-        return bound + 1;
-      }
-    }
-  }
-  return e;
-}
-
 const char *TargetNameImpl()
 {
   return hwy::TargetName(HWY_TARGET);
@@ -552,7 +517,6 @@ HWY_AFTER_NAMESPACE();
 namespace vpSSLMatchingKernel {
 HWY_EXPORT(MatchSpanImpl);
 HWY_EXPORT(TargetNameImpl);
-HWY_EXPORT(SquaredDifferenceRowsImpl);
 
 std::ptrdiff_t leftPad(int window)
 {
@@ -572,12 +536,6 @@ std::size_t paddedSize(int width, int height, int window)
 void matchSpan(const Params &params, int v, int u0, int u1)
 {
   HWY_DYNAMIC_DISPATCH(MatchSpanImpl)(params, v, u0, u1);
-}
-
-long squaredDifferenceRows(const uint8_t *a, std::ptrdiff_t strideA, const uint8_t *b, std::ptrdiff_t strideB,
-                           const int *first, const int *last, int nbRows, long bound)
-{
-  return HWY_DYNAMIC_DISPATCH(SquaredDifferenceRowsImpl)(a, strideA, b, strideB, first, last, nbRows, bound);
 }
 
 const char *targetName()

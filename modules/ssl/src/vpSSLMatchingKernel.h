@@ -58,15 +58,6 @@ std::size_t paddedSize(int width, int height, int window);
 //! Writes M(v, u) for u in [u0, u1) (Eq. 5), reading rows v - w .. v + w, columns u0 - w .. u1 + w of the copy.
 void matchSpan(const Params &params, int v, int u0, int u1);
 
-/*
-  Sum over rows r in [0, nbRows) of the squared differences (a[r strideA + x] - b[r strideB + x])^2 for x in
-  [first[r], last[r]], in exact integers (vpSSLRadiusEstimator's symmetry centring: a is one half of a disc, b the
-  other half turned by half a turn). Given up as soon as a partial sum exceeds \e bound: bound + 1 is returned
-  then. Reads up to 64 bytes past the last x of each row (the caller pads its copies).
-*/
-long squaredDifferenceRows(const uint8_t *a, std::ptrdiff_t strideA, const uint8_t *b, std::ptrdiff_t strideB,
-                           const int *first, const int *last, int nbRows, long bound);
-
 //! Name of the Highway target that matchSpan() runs on (e.g. "AVX3", "AVX2", "SSE4", "NEON", "SCALAR").
 const char *targetName();
 } // namespace vpSSLMatchingKernel
