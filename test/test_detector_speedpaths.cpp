@@ -7,12 +7,15 @@
     row): the landmarks, radiusEq7 included, are those of the whole-image normalisation;
   - the normalisation table is applied in SIMD (byte shuffles): the default matching map is the reference map of
     the image through the normaliser's table (from a histogram of one pixel in 16), on every SIMD target;
+  - the small-landmark mode's twice upsampling (SIMD) gives the plain bilinear image: its matching map is the
+    reference map of that image, normalised, on every SIMD target;
   - a tracking frame re-reads each predicted landmark from its region's centre without matching, and matches the
     regions whose landmark moved too far for that;
   - a tracked landmark with decimation is re-read from the decimated peak (no climb to the full-resolution
     maximum): its score is the full-resolution map at its centre, close to the full search's.
 */
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -148,6 +151,58 @@ TEST(DetectorSpeedPaths, NormalisedMapIsTheReferenceOnEverySimdTarget)
       hwy::SetSupportedTargetsForTest(t);
       vpSSLDetector detector;
       detector.setNbThreads(1);
+      detector.detect(I);
+      const vpImage<int> &M = detector.getMatchingMap();
+      ASSERT_EQ(M.getSize(), ref.getSize());
+      size_t different = 0;
+      for (unsigned int i = 0; i < M.getSize(); ++i) {
+        different += M.bitmap[i] != ref.bitmap[i] ? 1 : 0;
+      }
+      EXPECT_EQ(different, 0u) << hwy::TargetName(t) << ", " << sz[0] << "x" << sz[1];
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
+}
+
+TEST(DetectorSpeedPaths, UpsampledMapIsTheReferenceOnEverySimdTarget)
+{
+  // The plain loop the SIMD rows replace: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...), edges repeated.
+  auto upsample = [](const vpImage<unsigned char> &I) {
+    const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+    vpImage<unsigned char> O(static_cast<unsigned int>(2 * H), static_cast<unsigned int>(2 * W));
+    for (int v = 0; v < 2 * H; ++v) {
+      const int v0 = std::max(0, (v - 1) >> 1), v1 = std::min(H - 1, ((v - 1) >> 1) + 1), wv = (v & 1) ? 3 : 1;
+      for (int u = 0; u < 2 * W; ++u) {
+        const int u0 = std::max(0, (u - 1) >> 1), u1 = std::min(W - 1, ((u - 1) >> 1) + 1), wu = (u & 1) ? 3 : 1;
+        const int t = wu * I[v0][u0] + (4 - wu) * I[v0][u1], b = wu * I[v1][u0] + (4 - wu) * I[v1][u1];
+        O[v][u] = static_cast<unsigned char>((wv * t + (4 - wv) * b + 8) >> 4);
+      }
+    }
+    return O;
+  };
+  vpUniRand rng(11);
+  const unsigned int sizes[][2] = {{161, 97}, {1, 30}, {2, 25}, {67, 1}};
+  for (const auto &sz : sizes) {
+    vpImage<unsigned char> I(sz[1], sz[0]);
+    for (unsigned int i = 0; i < I.getSize(); ++i) {
+      I.bitmap[i] = static_cast<unsigned char>(rng.uniform(0, 256));
+    }
+    const vpImage<unsigned char> U = upsample(I);
+    unsigned char lut[256];
+    vpSSLBrightnessNormalizer().computeLut(U, lut, 4);
+    vpImage<unsigned char> N(U.getHeight(), U.getWidth());
+    for (unsigned int i = 0; i < U.getSize(); ++i) {
+      N.bitmap[i] = lut[U.bitmap[i]];
+    }
+    vpSSLDetector probe;
+    probe.setSmallLandmarkMode(true);
+    vpImage<int> ref;
+    vpSSLMatchingFunction(probe.getMatchingFunction().getWindow(), 0.5).computeReference(N, ref);
+    for (int64_t t : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(t);
+      vpSSLDetector detector;
+      detector.setNbThreads(1);
+      detector.setSmallLandmarkMode(true);
       detector.detect(I);
       const vpImage<int> &M = detector.getMatchingMap();
       ASSERT_EQ(M.getSize(), ref.getSize());

@@ -9,6 +9,7 @@
 #include <visp3/core/vpPixelMeterConversion.h>
 
 #include "vpSSLLookupKernel.h"
+#include "vpSSLResampleKernel.h"
 
 namespace {
 // Window of the small-landmark mode on the twice upsampled image: 1.25 times the 16 px that an 8 px
@@ -17,25 +18,15 @@ const unsigned int kSmallModeWindow = 20;
 // Smallest apparent radius read (px): below it the rings are thinner than a pixel.
 const double kMinRadius = 4.;
 
-// Twice the resolution, bilinear, pixel centres kept: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...).
+// Twice the resolution, bilinear, pixel centres kept: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...), edges
+// repeated. Output row v mixes input rows (v - 1) / 2 and the next one, 3:1 for odd v and 1:3 for even v.
 void upsample2(const vpImage<unsigned char> &I, vpImage<unsigned char> &O)
 {
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   O.resize(2 * H, 2 * W);
   for (int v = 0; v < 2 * H; ++v) {
     const int v0 = (v - 1) >> 1, v1 = std::min(H - 1, v0 + 1);
-    const int wv1 = (v & 1) ? 3 : 1; // weight of row v0 in quarters
-    const unsigned char *top = I[std::max(0, v0)], *bottom = I[v1];
-    unsigned char *out = O[v];
-    // Column 0 repeats column 0; odd columns weigh 3:1, even ones 1:3 the pair (u0, u0 + 1).
-    for (int u = 0; u < 2 * W; ++u) {
-      const int u0 = (u - 1) >> 1, u1 = std::min(W - 1, u0 + 1);
-      const int wu1 = (u & 1) ? 3 : 1;
-      const int c0 = std::max(0, u0);
-      const int t = wu1 * top[c0] + (4 - wu1) * top[u1];
-      const int b = wu1 * bottom[c0] + (4 - wu1) * bottom[u1];
-      out[u] = static_cast<unsigned char>((wv1 * t + (4 - wv1) * b + 8) >> 4);
-    }
+    vpSSLResampleKernel::upsampleRow(I[std::max(0, v0)], I[v1], (v & 1) ? 3 : 1, W, O[v]);
   }
 }
 
