@@ -103,6 +103,26 @@ std::vector<vpSSLLandmark> allModes(const View &near, const View &far)
   }
   return all;
 }
+// The default detector's matching map of I (full frame, one thread) is ref on every SIMD target compiled in.
+void expectMapOnEveryTarget(const vpImage<unsigned char> &I, bool smallLandmarkMode, const vpImage<int> &ref)
+{
+  for (int64_t t : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(t);
+    vpSSLDetector detector;
+    detector.setNbThreads(1);
+    detector.setSmallLandmarkMode(smallLandmarkMode);
+    detector.detect(I);
+    const vpImage<int> &M = detector.getMatchingMap();
+    ASSERT_EQ(M.getSize(), ref.getSize());
+    size_t different = 0;
+    for (unsigned int i = 0; i < M.getSize(); ++i) {
+      different += M.bitmap[i] != ref.bitmap[i] ? 1 : 0;
+    }
+    EXPECT_EQ(different, 0u) << hwy::TargetName(t) << ", " << I.getWidth() << "x" << I.getHeight()
+                             << (smallLandmarkMode ? ", small-landmark mode" : "");
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
 } // namespace
 
 TEST(DetectorSpeedPaths, EverySimdTargetGivesTheSameLandmarks)
@@ -147,20 +167,7 @@ TEST(DetectorSpeedPaths, NormalisedMapIsTheReferenceOnEverySimdTarget)
     }
     vpImage<int> ref;
     vpSSLMatchingFunction(40, 0.5).computeReference(N, ref);
-    for (int64_t t : hwy::SupportedAndGeneratedTargets()) {
-      hwy::SetSupportedTargetsForTest(t);
-      vpSSLDetector detector;
-      detector.setNbThreads(1);
-      detector.detect(I);
-      const vpImage<int> &M = detector.getMatchingMap();
-      ASSERT_EQ(M.getSize(), ref.getSize());
-      size_t different = 0;
-      for (unsigned int i = 0; i < M.getSize(); ++i) {
-        different += M.bitmap[i] != ref.bitmap[i] ? 1 : 0;
-      }
-      EXPECT_EQ(different, 0u) << hwy::TargetName(t) << ", " << sz[0] << "x" << sz[1];
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    expectMapOnEveryTarget(I, false, ref);
   }
 }
 
@@ -198,21 +205,7 @@ TEST(DetectorSpeedPaths, UpsampledMapIsTheReferenceOnEverySimdTarget)
     probe.setSmallLandmarkMode(true);
     vpImage<int> ref;
     vpSSLMatchingFunction(probe.getMatchingFunction().getWindow(), 0.5).computeReference(N, ref);
-    for (int64_t t : hwy::SupportedAndGeneratedTargets()) {
-      hwy::SetSupportedTargetsForTest(t);
-      vpSSLDetector detector;
-      detector.setNbThreads(1);
-      detector.setSmallLandmarkMode(true);
-      detector.detect(I);
-      const vpImage<int> &M = detector.getMatchingMap();
-      ASSERT_EQ(M.getSize(), ref.getSize());
-      size_t different = 0;
-      for (unsigned int i = 0; i < M.getSize(); ++i) {
-        different += M.bitmap[i] != ref.bitmap[i] ? 1 : 0;
-      }
-      EXPECT_EQ(different, 0u) << hwy::TargetName(t) << ", " << sz[0] << "x" << sz[1];
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    expectMapOnEveryTarget(I, true, ref);
   }
 }
 

@@ -347,17 +347,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     l.score = std::min(1., static_cast<double>(peak.value) / maxValue);
     // Tracking mode (paper Sec. 4.1): a landmark read in the previous frame near this peak is re-read around
     // its previous ellipse, which skips the search over the whole radius range.
-    const vpSSLLandmark *prior = nullptr;
-    if (!m_lastSearchWasFull) {
-      double bestDistance = 0.;
-      for (const vpSSLLandmark &k : m_previous) {
-        const double d = std::hypot(k.u - pu, k.v - pv);
-        if (d < 0.5 * k.minorRadius && (prior == nullptr || d < bestDistance)) {
-          prior = &k;
-          bestDistance = d;
-        }
-      }
-    }
+    const vpSSLLandmark *prior = m_lastSearchWasFull ? nullptr : previousNear(pu, pv);
     bool read = false;
     if (prior != nullptr) {
       vpSSLLandmark scaled = *prior;
@@ -483,15 +473,7 @@ void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double sc
   for (size_t k = 0; k < m_rois.size(); ++k) {
     const vpRect &r = m_rois[k];
     const double cu = r.getLeft() + 0.5 * r.getWidth(), cv = r.getTop() + 0.5 * r.getHeight();
-    const vpSSLLandmark *prior = nullptr;
-    double bestDistance = 0.;
-    for (const vpSSLLandmark &p : m_previous) {
-      const double d = std::hypot(p.u - cu, p.v - cv);
-      if (d < 0.5 * p.minorRadius && (prior == nullptr || d < bestDistance)) {
-        prior = &p;
-        bestDistance = d;
-      }
-    }
+    const vpSSLLandmark *prior = previousNear(cu, cv);
     if (prior == nullptr || m_roiFilled[k]) {
       m_pendingRois.push_back(r);
       continue;
@@ -518,6 +500,21 @@ void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double sc
       m_pendingRois.push_back(r);
     }
   }
+}
+
+const vpSSLLandmark *vpSSLDetector::previousNear(double u, double v) const
+{
+  // Within half its smaller semi-axis: the same landmark, not a neighbour (landmarks do not overlap).
+  const vpSSLLandmark *nearest = nullptr;
+  double nearestDistance = 0.;
+  for (const vpSSLLandmark &k : m_previous) {
+    const double d = std::hypot(k.u - u, k.v - v);
+    if (d < 0.5 * k.minorRadius && (nearest == nullptr || d < nearestDistance)) {
+      nearest = &k;
+      nearestDistance = d;
+    }
+  }
+  return nearest;
 }
 
 double vpSSLDetector::scoreAt(const vpImage<unsigned char> &I, double u, double v) const

@@ -199,6 +199,8 @@ private:
   // listed in m_pendingRois.
   void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
   double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
+  // The landmark of the previous detection nearest to (u, v) and within half its smaller semi-axis, if any.
+  const vpSSLLandmark *previousNear(double u, double v) const;
 
   vpSSLBrightnessNormalizer m_normalizer;
   vpSSLMatchingFunction m_match;
