@@ -5,6 +5,8 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLPeakKernel.h"
+
 vpSSLPeakDetector::vpSSLPeakDetector() : m_threshold(0), m_minDistance(4), m_maxPeaks(64) {}
 
 void vpSSLPeakDetector::setMinDistance(unsigned int d)
@@ -47,52 +49,49 @@ void vpSSLPeakDetector::scanRegion(const vpImage<int> &M, int u0, int v0, int u1
   }
   m_columns.resize(static_cast<size_t>(u1 - u0 + 1));
   int *columns = m_columns.data();
-  for (int v = v0; v <= v1; ++v) {
-    const int *row = M[v];
-    // Most pixels are below the threshold, and those above come in runs whose edges a branch mispredicts: the
-    // columns over the threshold are listed first, then examined in the same order. Blocks of 32 columns whose
-    // maximum (a loop the compiler vectorises) is below the threshold, most of them, are skipped whole.
-    int nb = 0;
-    for (int b0 = u0; b0 <= u1; b0 += 32) {
-      const int b1 = std::min(u1 + 1, b0 + 32);
-      int blockMax = row[b0];
-      for (int u = b0 + 1; u < b1; ++u) {
-        blockMax = std::max(blockMax, row[u]);
-      }
-      if (blockMax < m_threshold) {
+  // The first and last columns of the map, whose neighbours outside it are not compared (one-pixel maps included).
+  auto borderMax = [&](int v, int u) {
+    const int m = M[v][u];
+    if (m < m_threshold) {
+      return false;
+    }
+    for (int dv = -1; dv <= 1; ++dv) {
+      const int vv = v + dv;
+      if (vv < 0 || vv >= H) {
         continue;
       }
-      for (int u = b0; u < b1; ++u) {
-        columns[nb] = u;
-        nb += row[u] >= m_threshold ? 1 : 0;
+      for (int du = -1; du <= 1; ++du) {
+        const int uu = u + du;
+        if ((du == 0 && dv == 0) || uu < 0 || uu >= W) {
+          continue;
+        }
+        // Strict on the later neighbours, loose on the earlier ones: one pixel per plateau.
+        const int n = M[vv][uu];
+        const bool later = dv > 0 || (dv == 0 && du > 0);
+        if (later ? n >= m : n > m) {
+          return false;
+        }
       }
+    }
+    return true;
+  };
+  const int inner0 = std::max(u0, 1), inner1 = std::min(u1, W - 2);
+  for (int v = v0; v <= v1; ++v) {
+    const int *row = M[v];
+    int nb = 0;
+    if (u0 == 0 && borderMax(v, 0)) {
+      columns[nb++] = 0;
+    }
+    if (inner0 <= inner1) {
+      nb += vpSSLPeakKernel::localMaxima(v > 0 ? M[v - 1] : nullptr, row, v + 1 < H ? M[v + 1] : nullptr, inner0,
+                                         inner1, m_threshold, columns + nb);
+    }
+    if (u1 == W - 1 && W > 1 && borderMax(v, W - 1)) {
+      columns[nb++] = W - 1;
     }
     for (int k = 0; k < nb; ++k) {
       const int u = columns[k];
       const int m = row[u];
-      // Strict on the later neighbours, loose on the earlier ones: one pixel per plateau.
-      bool isMax = true;
-      for (int dv = -1; dv <= 1 && isMax; ++dv) {
-        const int vv = v + dv;
-        if (vv < 0 || vv >= H) {
-          continue;
-        }
-        for (int du = -1; du <= 1; ++du) {
-          const int uu = u + du;
-          if ((du == 0 && dv == 0) || uu < 0 || uu >= W) {
-            continue;
-          }
-          const int n = M[vv][uu];
-          const bool later = dv > 0 || (dv == 0 && du > 0);
-          if (later ? n >= m : n > m) {
-            isMax = false;
-            break;
-          }
-        }
-      }
-      if (!isMax) {
-        continue;
-      }
       vpSSLPeak p;
       p.value = m;
       p.u = u;

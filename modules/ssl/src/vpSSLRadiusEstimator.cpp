@@ -7,6 +7,7 @@
 #include <visp3/core/vpException.h>
 
 #include "vpSSLRadiusEstimatorInternal.h"
+#include "vpSSLRayKernel.h"
 
 using namespace vpSSLRadiusEstimatorInternal;
 
@@ -30,6 +31,9 @@ const double kSolidRing = 0.85;
 const double kMaxAsymmetry = 0.6;
 // Share of the best level's total score that an outer level needs to be taken for the landmark's.
 const double kLevelShare = 0.7;
+// rayCandidates() needs the outermost pair's contrast at 0.6 kMinPairContrast (3.6) or more: below this (a margin
+// for rounding) a radius is given up on.
+const double kMinOuterContrast = 3.5;
 // Alternating ring pairs a ray must show, blur permitting (fewer only when fewer rings are resolvable).
 const int kMinAlternations = 3;
 
@@ -158,24 +162,12 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
   C.resize(std::max<size_t>(1, want));
   float *p = P.data();
   double *c = C.data();
-  const unsigned char *bitmap = I.bitmap;
-  const int width = static_cast<int>(I.getWidth()), lastU = width - 1, lastV = static_cast<int>(I.getHeight()) - 1;
-  const double cd = kCos[d], sd = kSin[d], halfStep = 0.5 * m_step;
-  // The samples first, then their running integral: the samples are independent of each other and pipeline, the
-  // integral is a chain of additions (the same operations in the same order as in one loop: the same values).
-  for (size_t i = have; i < want; ++i) {
-    const double rho = static_cast<double>(i) * m_step;
-    // bilinear(), with the row pointers computed rather than looked up.
-    const double x = u + rho * cd, y = v + rho * sd;
-    const int u0 = static_cast<int>(x), v0 = static_cast<int>(y);
-    const double fu = x - u0, fv = y - v0;
-    const int u1 = std::min(u0 + 1, lastU), v1 = std::min(v0 + 1, lastV);
-    const unsigned char *r0 = bitmap + static_cast<std::ptrdiff_t>(v0) * width,
-                        *r1 = bitmap + static_cast<std::ptrdiff_t>(v1) * width;
-    const double top = (1. - fu) * r0[u0] + fu * r0[u1];
-    const double bottom = (1. - fu) * r1[u0] + fu * r1[u1];
-    p[i] = static_cast<float>((1. - fv) * top + fv * bottom);
-  }
+  const double halfStep = 0.5 * m_step;
+  // The samples first (SIMD: they are independent of each other), then their running integral (a chain of
+  // additions, in the order of the scalar loop).
+  const vpSSLRayKernel::Ray r = {
+      I.bitmap, static_cast<int>(I.getWidth()), static_cast<int>(I.getHeight()), u, v, kCos[d], kSin[d], m_step};
+  vpSSLRayKernel::sample(r, have, want, p);
   // Trapezoidal integral of the profile from 0 to rho.
   double integral = c[have > 0 ? have - 1 : 0];
   for (size_t i = std::max<size_t>(have, 1); i < want; ++i) {
@@ -229,9 +221,8 @@ double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContras
       contrast[nb] = ((k - 1) % 2 == 0) ? mean - previous : previous - mean;
       cmax = std::max(cmax, contrast[nb]);
       ++nb;
-      // rayCandidates() needs the outermost pair's contrast at 0.6 kMinPairContrast (3.6) or more: below
-      // 3.5 (a margin for rounding) nothing else need be read.
-      if (nb == 1 && contrast[0] < 3.5) {
+      // The screen of rayCandidates() (vpSSLRayKernel::screen()) runs this test and the next one in SIMD.
+      if (nb == 1 && contrast[0] < kMinOuterContrast) {
         nbPairsOut = 0;
         outerContrast = contrast[0];
         nbExpected = 0;
@@ -400,7 +391,23 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
     ray(d, grid.back());
   }
   scores.assign(grid.size(), -1e30);
-  for (size_t i = 0; i < grid.size(); ++i) {
+  // Most radii fail rayScore()'s tests on the two outermost ring pairs: the SIMD screen runs those tests on the
+  // whole grid at once, and rayScore() reads the radii that pass them.
+  m_survivors.resize(grid.size());
+  const std::vector<float> &P = m_profile[d];
+  const vpSSLRayKernel::Profile profile = {P.data(),
+                                           m_prefix[d].data(),
+                                           P.size(),
+                                           m_step,
+                                           1. / m_step,
+                                           m_q,
+                                           kMinRingWidth * m_pixelScale,
+                                           kMinRingRadius * m_pixelScale,
+                                           kMinOuterContrast};
+  const size_t nbSurvivors =
+      grid.empty() ? 0 : vpSSLRayKernel::screen(profile, grid.data(), grid.size(), m_survivors.data());
+  for (size_t k = 0; k < nbSurvivors; ++k) {
+    const size_t i = m_survivors[k];
     double outer;
     int nbPairs, nbExpected;
     const double s = rayScore(d, grid[i], outer, nbPairs, nbExpected);

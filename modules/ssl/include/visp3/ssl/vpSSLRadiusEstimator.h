@@ -113,6 +113,7 @@ private:
   std::vector<double> m_prefix[8];
   mutable std::vector<double> m_mean3[8];       // means of three neighbouring samples (solidRings()), read as needed
   mutable std::vector<double> m_grid, m_scores; // radius search scratch
+  std::vector<uint32_t> m_survivors;            // radii of the grid that pass the SIMD screen
   std::vector<Candidate> m_candidates[8];
   std::vector<double> m_valid; // selectRadii() scratch
   // Centre of the rays (readRays()); each ray is read on first use (ray()).

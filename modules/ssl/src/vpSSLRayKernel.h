@@ -1,0 +1,56 @@
+/*
+  Private interface of the ray reading of vpSSLRadiusEstimator in SIMD: the bilinear samples of a ray and the
+  screening of the radius grid by the two outermost ring pairs, implemented with Google Highway in
+  vpSSLRayKernel.cpp and picked at run time for the CPU. Both give the values of the scalar code they replace,
+  bit for bit (the same double operations in the same order, compiled without contraction into fused
+  multiply-adds): test_ray_kernel.
+*/
+#ifndef VP_SSL_RAY_KERNEL_H
+#define VP_SSL_RAY_KERNEL_H
+
+#include <cstddef>
+#include <cstdint>
+
+namespace vpSSLRayKernel {
+//! Where a ray starts and how it is sampled: sample i lies at (u, v) + i step (cd, sd).
+struct Ray
+{
+  const uint8_t *bitmap; //!< Image, rows of \e width bytes.
+  int width, height;
+  double u, v;   //!< Centre.
+  double cd, sd; //!< Unit direction.
+  double step;   //!< Distance between samples (px).
+};
+
+/*!
+  out[i] = the bilinear interpolation of the image at sample i of \e ray, for i in [i0, i1), rounded to float: the
+  neighbours are (floor(x), floor(y)) and the next column and row, clamped to the last ones. Every sample must lie
+  inside the image (x, y >= 0).
+*/
+void sample(const Ray &ray, std::size_t i0, std::size_t i1, float *out);
+
+//! A ray's profile and where its rings are too thin to be read (vpSSLRadiusEstimator::rayScore()).
+struct Profile
+{
+  const float *p;     //!< Samples, one every \e step px from the centre.
+  const double *c;    //!< c[i]: trapezoidal integral of p from 0 to sample i.
+  std::size_t n;      //!< Samples (and integrals), at least 1.
+  double step;        //!< Their spacing (a power of two).
+  double invStep;     //!< 1 / step.
+  double q;           //!< Ratio of successive ring edges, sqrt(p).
+  double minWidth;    //!< Narrowest ring read (px).
+  double minRadius;   //!< Smallest inner edge of a ring read (px).
+  double minContrast; //!< Least contrast of the outermost ring pair.
+};
+
+/*!
+  Indices i in [0, n) of the radii R = radii[i] at which the ray's three outermost rings ([q R, R], [q^2 R, q R],
+  [q^3 R, q^2 R]) are all readable, the outermost pair's contrast (white minus black) is at least
+  profile.minContrast, and the next pair's is at least a quarter of the larger of the two: the tests that end
+  rayScore() at every other radius. Written to \e survivors in increasing order.
+  \return their number.
+*/
+std::size_t screen(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors);
+} // namespace vpSSLRayKernel
+
+#endif
