@@ -298,9 +298,10 @@ TEST(DetectorSpeedPaths, MatchingMapIsZeroOutsideTheRegionsFromFrameToFrame)
       vpSSLDetector fresh;
       fresh.setNbThreads(1);
       fresh.setDecimation(decimation);
-      // The regions whose landmark was re-read from their centre are not matched (getMatchedRegions()): a fresh
-      // detector, which has no previous landmark, matches all of its regions.
-      const std::vector<vpRect> matched = detector.getMatchedRegions();
+      // The regions whose landmark was re-read from their centre are not matched, nor those of a large landmark
+      // matched on the decimated image (getMapRegions()): a fresh detector, which has no previous landmark, matches
+      // all of its regions at its own resolution.
+      const std::vector<vpRect> matched = detector.getMapRegions();
       if (k != 3) {
         fresh.setFullSearchPeriod(0);
         fresh.setRegionsOfInterest(matched);
@@ -386,5 +387,81 @@ TEST(DetectorSpeedPaths, LandmarksThatMovedFarFromThePredictionAreMatched)
       EXPECT_LT(std::hypot(l->u - after.centres[k].get_u(), l->v - after.centres[k].get_v()), 0.5)
           << "decimation " << decimation << ", landmark " << k;
     }
+  }
+}
+
+TEST(DetectorSpeedPaths, LargePredictedLandmarksAreMatchedOnTheDecimatedImage)
+{
+  // At full resolution, a region whose predicted landmark has a smaller semi-axis of 25 px or more is matched on the
+  // decimated image; the landmarks are those a full search reads. The target moved by 14 px, too far for the
+  // re-reading from the regions' centres.
+  const View before = render(1.0);
+  View after;
+  const vpHomogeneousMatrix cMo(0.02 + 14. / 600., -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+  vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
+  renderer.setTarget(vpSSLTarget::ssl3a3());
+  renderer.render(cMo, after.I);
+  vpSSLDetector reference;
+  reference.setNbThreads(1);
+  ASSERT_TRUE(reference.detect(after.I));
+  ASSERT_EQ(reference.getLandmarks().size(), 3u);
+  vpSSLDetector detector;
+  detector.setNbThreads(1);
+  ASSERT_TRUE(detector.detect(before.I));
+  for (const vpSSLLandmark &l : detector.getLandmarks()) {
+    ASSERT_GE(l.minorRadius, 25.) << "the test needs large landmarks";
+  }
+  detector.setFullSearchPeriod(0);
+  detector.setRegionsOfInterest(roisAround(before.centres));
+  detector.detect(after.I);
+  EXPECT_EQ(detector.getMatchedRegions().size(), 3u);
+  EXPECT_TRUE(detector.getMapRegions().empty()) << "every region was matched on the decimated image";
+  size_t nonZero = 0;
+  const vpImage<int> &M = detector.getMatchingMap();
+  for (unsigned int i = 0; i < M.getSize(); ++i) {
+    nonZero += M.bitmap[i] != 0 ? 1 : 0;
+  }
+  EXPECT_EQ(nonZero, 0u) << "the full-resolution map has no region";
+  ASSERT_EQ(detector.getLandmarks().size(), 3u);
+  for (const vpSSLLandmark &l : reference.getLandmarks()) {
+    bool same = false;
+    for (const vpSSLLandmark &k : detector.getLandmarks()) {
+      same = same || (std::hypot(k.u - l.u, k.v - l.v) < 0.05 && std::fabs(k.radius / l.radius - 1.) < 0.01 &&
+                      std::fabs(k.minorRadius / l.minorRadius - 1.) < 0.01);
+    }
+    EXPECT_TRUE(same) << "landmark at " << l.u << ", " << l.v << " not read as the full search read it";
+  }
+  EXPECT_TRUE(detector.getTargetMatch().found);
+}
+
+TEST(DetectorSpeedPaths, RegionsTheDecimatedPassMissesAreMatchedAtFullResolution)
+{
+  // The target went from 1 m to 3.5 m between two frames: its landmarks (60 and 30 px, then 17 and 9 px) are
+  // predicted large, some are missed on the decimated image, and those regions are matched again at full
+  // resolution, which reads what a fresh detector matching the same regions at full resolution reads.
+  const View before = render(1.0), after = render(3.5);
+  vpSSLDetector detector;
+  detector.setNbThreads(1);
+  ASSERT_TRUE(detector.detect(before.I));
+  detector.setFullSearchPeriod(0);
+  const std::vector<vpRect> rois = roisAround(after.centres);
+  detector.setRegionsOfInterest(rois);
+  detector.detect(after.I);
+  EXPECT_EQ(detector.getMatchedRegions().size(), 3u);
+  EXPECT_FALSE(detector.getMapRegions().empty()) << "no region was matched again at full resolution";
+  vpSSLDetector fresh;
+  fresh.setNbThreads(1);
+  fresh.setFullSearchPeriod(0);
+  fresh.setRegionsOfInterest(rois);
+  fresh.detect(after.I);
+  EXPECT_EQ(fresh.getMapRegions().size(), 3u) << "a fresh detector has no prediction";
+  EXPECT_GE(fresh.getLandmarks().size(), 2u);
+  EXPECT_EQ(detector.getLandmarks().size(), fresh.getLandmarks().size());
+  for (const vpSSLLandmark &l : fresh.getLandmarks()) {
+    bool same = false;
+    for (const vpSSLLandmark &k : detector.getLandmarks()) {
+      same = same || (std::hypot(k.u - l.u, k.v - l.v) < 0.05 && std::fabs(k.radius / l.radius - 1.) < 0.01);
+    }
+    EXPECT_TRUE(same) << "landmark at " << l.u << ", " << l.v << " (radius " << l.radius << ") not read";
   }
 }

@@ -67,6 +67,10 @@ unsigned int coarseWindow(unsigned int w)
 // normalisation, which needs the whole image's table.
 const unsigned int kHistogramStep = 4;
 
+// Smallest semi-axis, relative to the window, of a predicted landmark whose region of a tracking frame is matched on
+// the decimated image (vpSSLDetector::largeLandmarkIn()).
+const double kCoarseRegionRadius = 0.625;
+
 double elapsedMs(std::chrono::steady_clock::time_point &t)
 {
   const auto now = std::chrono::steady_clock::now();
@@ -165,13 +169,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   }
   const double scale = m_upsample ? 2. : 1.;
   // Decimated matching (setDecimation()): candidates from the half-resolution map, rings read at full
-  // resolution. The normalisation table comes from a sparse histogram of the whole image, so that a region
-  // of interest is normalised exactly as in a full-frame search, and only the pixels matched are decimated.
-  const bool coarse = m_decimation == 2 && !m_upsample && I.getWidth() >= 2 && I.getHeight() >= 2;
-  const vpImage<unsigned char> *In = raw;
-  // Whether only some pixels of the normalised image are up to date (m_lut holds the table then).
-  bool partialNormalization = false;
-  int maxValue = 0;
+  // resolution.
+  const bool canDecimate = !m_upsample && I.getWidth() >= 2 && I.getHeight() >= 2;
   if (m_upsample) {
     upsample2(I, m_upsampled);
     raw = &m_upsampled;
@@ -195,31 +194,96 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   m_refined.clear();
   m_times.normalization = elapsedMs(t);
   m_pendingRois.clear();
+  m_pendingIndex.clear();
+  m_mapRois.clear();
   double reread = 0.; // ring reading of the predicted landmarks, counted with the other ring readings
-  if (!m_lastSearchWasFull) {
+  if (m_lastSearchWasFull) {
+    searchRegions(I, *raw, m_decimation == 2 && canDecimate, nullptr, scale, t);
+  } else {
     m_roiFilled.assign(m_rois.size(), 0);
     rereadPredicted(*raw, scale);
     reread = elapsedMs(t);
-  }
-  // Tracking frame: only the regions whose landmark was not re-read are matched (paper Sec. 4.1); a full search
-  // matches the whole image.
-  const std::vector<vpRect> *rois = m_lastSearchWasFull ? &m_noRois : &m_pendingRois;
-  const bool matching = m_lastSearchWasFull || !m_pendingRois.empty();
-  if (!matching) {
-    // Every region's landmark was re-read: nothing to match or search. The map keeps nothing of earlier regions.
-    if (coarse) {
-      m_decimated.resize(I.getHeight() / 2, I.getWidth() / 2);
+    if (m_pendingRois.empty()) {
+      // Every region's landmark was re-read: nothing to match or search. The map keeps nothing of earlier regions.
+      if (m_decimation == 2 && canDecimate) {
+        m_decimated.resize(I.getHeight() / 2, I.getWidth() / 2);
+      }
+      clearMap(m_decimation == 2 && canDecimate ? m_decimated : *raw, m_mainMap);
+      m_peaks.clear();
+      m_times.normalization += elapsedMs(t);
+    } else if (m_decimation == 1 && canDecimate) {
+      // A region whose landmark is large enough for the decimated pass is matched there, a tenth of the work of
+      // the full resolution; the others, and those where the decimated pass finds nothing, at full resolution.
+      m_coarseRois.clear();
+      m_coarseIndex.clear();
+      m_fineRois.clear();
+      for (size_t k = 0; k < m_pendingRois.size(); ++k) {
+        if (largeLandmarkIn(m_pendingRois[k])) {
+          m_coarseRois.push_back(m_pendingRois[k]);
+          m_coarseIndex.push_back(m_pendingIndex[k]);
+        } else {
+          m_fineRois.push_back(m_pendingRois[k]);
+        }
+      }
+      if (!m_coarseRois.empty()) {
+        searchRegions(I, *raw, true, &m_coarseRois, scale, t);
+        for (size_t k = 0; k < m_coarseRois.size(); ++k) {
+          if (!m_roiFilled[m_coarseIndex[k]]) {
+            m_fineRois.push_back(m_coarseRois[k]);
+          }
+        }
+      }
+      if (!m_fineRois.empty()) {
+        searchRegions(I, *raw, false, &m_fineRois, scale, t);
+      } else {
+        clearMap(*raw, m_mainMap);
+      }
+      m_mapRois.assign(m_fineRois.begin(), m_fineRois.end());
+    } else {
+      searchRegions(I, *raw, m_decimation == 2 && canDecimate, &m_pendingRois, scale, t);
+      m_mapRois.assign(m_pendingRois.begin(), m_pendingRois.end());
     }
-    matchRegions(coarse ? m_matchCoarse : m_match, coarse ? m_decimated : *raw, m_pendingRois);
-    m_peaks.clear();
-    m_times.normalization += elapsedMs(t);
-  } else if (coarse) {
+  }
+  // Stable insertion sort, best score first: a handful of landmarks, and std::stable_sort would allocate
+  // a buffer every frame.
+  for (size_t i = 1; i < m_landmarks.size(); ++i) {
+    for (size_t j = i; j > 0 && m_landmarks[j - 1].score < m_landmarks[j].score; --j) {
+      std::swap(m_landmarks[j - 1], m_landmarks[j]);
+    }
+  }
+  m_times.radius += reread + elapsedMs(t);
+  // Storage reused: no allocation once it has grown to the number of landmarks in view.
+  m_previous.assign(m_landmarks.begin(), m_landmarks.end());
+
+  m_identifier.identify(m_landmarks, m_targetMatch);
+  m_times.identification = elapsedMs(t);
+
+  fillObjects();
+  m_times.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return !m_landmarks.empty();
+}
+
+void vpSSLDetector::searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &rawImage, bool coarse,
+                                  const std::vector<vpRect> *regions, double scale,
+                                  std::chrono::steady_clock::time_point &t)
+{
+  const vpImage<unsigned char> *raw = &rawImage;
+  const vpImage<unsigned char> *In = raw;
+  const std::vector<vpRect> *rois = regions != nullptr ? regions : &m_noRois;
+  const bool full = regions == nullptr;
+  // The decimated map of the regions a full-resolution tracking frame matches there has a map of its own:
+  // getMatchingMap() stays the full-resolution one.
+  MatchMap &map = coarse && m_decimation == 1 ? m_coarseMap : m_mainMap;
+  // Whether only some pixels of the normalised image are up to date (m_lut holds the table then).
+  bool partialNormalization = false;
+  int maxValue = 0;
+  if (coarse) {
     const unsigned char *lut = m_normalize ? m_lut : nullptr;
     const int Wc = static_cast<int>(I.getWidth() / 2), Hc = static_cast<int>(I.getHeight() / 2);
     m_decimated.resize(static_cast<unsigned int>(Hc), static_cast<unsigned int>(Wc));
     const int wc = static_cast<int>(m_matchCoarse.getWindow());
     m_scaledRois.clear();
-    if (m_lastSearchWasFull) {
+    if (full) {
       decimate2(I, lut, 0, 0, Wc, Hc, m_decimated);
     } else {
       // Pixel j of the decimated image is centred on pixel 2 j + 0.5 of the image.
@@ -239,21 +303,21 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       rois = &m_scaledRois;
     }
     m_times.normalization += elapsedMs(t);
-    if (m_lastSearchWasFull) {
-      m_matchCoarse.compute(m_decimated, m_map);
-      m_mapAllWritten = true;
+    if (full) {
+      m_matchCoarse.compute(m_decimated, map.map);
+      map.allWritten = true;
     } else {
-      matchRegions(m_matchCoarse, m_decimated, *rois);
+      matchRegions(m_matchCoarse, m_decimated, *rois, map);
     }
-    m_times.matching = elapsedMs(t);
+    m_times.matching += elapsedMs(t);
     maxValue = m_matchCoarse.getMaxValue();
     m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
-    m_peakDetector.detect(m_map, m_peaks, *rois);
+    m_peakDetector.detect(map.map, m_peaks, *rois);
     for (vpSSLPeak &p : m_peaks) {
       p.u = 2. * p.u + 0.5;
       p.v = 2. * p.v + 0.5;
     }
-    m_times.peaks = elapsedMs(t);
+    m_times.peaks += elapsedMs(t);
   } else {
     if (m_upsample) {
       m_scaledRois.clear();
@@ -263,8 +327,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
       }
       rois = &m_scaledRois;
     }
-    In = raw;
-    if (m_normalize && m_lastSearchWasFull) {
+    if (m_normalize && full) {
       m_normalized.resize(raw->getHeight(), raw->getWidth());
       vpSSLLookupKernel::applyTable(m_lut, raw->bitmap, m_normalized.bitmap, raw->getSize());
       In = &m_normalized;
@@ -292,18 +355,18 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
     m_times.normalization += elapsedMs(t);
 
-    if (m_lastSearchWasFull) {
-      m_match.compute(*In, m_map);
-      m_mapAllWritten = true;
+    if (full) {
+      m_match.compute(*In, map.map);
+      map.allWritten = true;
     } else {
-      matchRegions(m_match, *In, *rois);
+      matchRegions(m_match, *In, *rois, map);
     }
-    m_times.matching = elapsedMs(t);
+    m_times.matching += elapsedMs(t);
 
     maxValue = m_match.getMaxValue();
     m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
-    m_peakDetector.detect(m_map, m_peaks, *rois);
-    m_times.peaks = elapsedMs(t);
+    m_peakDetector.detect(map.map, m_peaks, *rois);
+    m_times.peaks += elapsedMs(t);
   }
 
   // The white paper just outside the outermost black ring continues the pattern by one ring (out to
@@ -388,23 +451,25 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
     keepLandmark(l, *raw, *In, coarse || partialNormalization, scale);
   }
-  // Stable insertion sort, best score first: a handful of landmarks, and std::stable_sort would allocate
-  // a buffer every frame.
-  for (size_t i = 1; i < m_landmarks.size(); ++i) {
-    for (size_t j = i; j > 0 && m_landmarks[j - 1].score < m_landmarks[j].score; --j) {
-      std::swap(m_landmarks[j - 1], m_landmarks[j]);
+  m_times.radius += elapsedMs(t);
+}
+
+bool vpSSLDetector::largeLandmarkIn(const vpRect &r) const
+{
+  // The landmark of the previous frame inside the region and nearest its centre: the one the region predicts. The
+  // decimated pass finds every landmark whose smaller semi-axis is 0.625 w or more (25 px for w = 40, setDecimation());
+  // between two frames the apparent size changes by far less than the margin kept here.
+  const double cu = r.getLeft() + 0.5 * r.getWidth(), cv = r.getTop() + 0.5 * r.getHeight();
+  const vpSSLLandmark *nearest = nullptr;
+  double nearestDistance = 0.;
+  for (const vpSSLLandmark &k : m_previous) {
+    const double d = std::hypot(k.u - cu, k.v - cv);
+    if (r.isInside(vpImagePoint(k.v, k.u)) && (nearest == nullptr || d < nearestDistance)) {
+      nearest = &k;
+      nearestDistance = d;
     }
   }
-  m_times.radius = reread + elapsedMs(t);
-  // Storage reused: no allocation once it has grown to the number of landmarks in view.
-  m_previous.assign(m_landmarks.begin(), m_landmarks.end());
-
-  m_identifier.identify(m_landmarks, m_targetMatch);
-  m_times.identification = elapsedMs(t);
-
-  fillObjects();
-  m_times.total = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return !m_landmarks.empty();
+  return nearest != nullptr && nearest->minorRadius >= kCoarseRegionRadius * m_window;
 }
 
 bool vpSSLDetector::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw,
@@ -476,6 +541,7 @@ void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double sc
     const vpSSLLandmark *prior = previousNear(cu, cv);
     if (prior == nullptr || m_roiFilled[k]) {
       m_pendingRois.push_back(r);
+      m_pendingIndex.push_back(k);
       continue;
     }
     vpSSLLandmark scaled = *prior, l;
@@ -491,6 +557,7 @@ void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double sc
     }
     if (!m_radiusEstimator.estimate(raw, l, scaled)) {
       m_pendingRois.push_back(r);
+      m_pendingIndex.push_back(k);
       continue;
     }
     l.score = scoreAt(raw, l.u, l.v);
@@ -498,6 +565,7 @@ void vpSSLDetector::rereadPredicted(const vpImage<unsigned char> &raw, double sc
       m_roiFilled[k] = 1;
     } else {
       m_pendingRois.push_back(r);
+      m_pendingIndex.push_back(k);
     }
   }
 }
@@ -526,32 +594,39 @@ double vpSSLDetector::scoreAt(const vpImage<unsigned char> &I, double u, double 
   return std::max(0., std::min(1., static_cast<double>(fullResolutionMatch(I, cu, cv)) / m_match.getMaxValue()));
 }
 
-void vpSSLDetector::matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
-                                 const std::vector<vpRect> &rois)
+void vpSSLDetector::clearMap(const vpImage<unsigned char> &I, MatchMap &map)
 {
   // The map must be zero outside the regions (getMatchingMap()). Clearing it all at every tracking frame cost as
   // much as matching the regions of a decimated frame: only what the last call wrote is cleared (the boxes
   // vpSSLMatchingFunction writes: each rectangle's pixels, clipped to the image).
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
-  if (m_mapAllWritten || m_map.getWidth() != I.getWidth() || m_map.getHeight() != I.getHeight()) {
-    m_map.resize(I.getHeight(), I.getWidth());
-    std::fill(m_map.bitmap, m_map.bitmap + m_map.getSize(), 0);
+  if (map.allWritten || map.map.getWidth() != I.getWidth() || map.map.getHeight() != I.getHeight()) {
+    map.map.resize(I.getHeight(), I.getWidth());
+    std::fill(map.map.bitmap, map.map.bitmap + map.map.getSize(), 0);
   } else {
-    for (const vpRect &r : m_mapWritten) {
+    for (const vpRect &r : map.written) {
       const double u0 = std::ceil(std::max(0., r.getLeft())), v0 = std::ceil(std::max(0., r.getTop()));
       const double u1 = std::floor(std::min(W - 1., r.getRight())), v1 = std::floor(std::min(H - 1., r.getBottom()));
       if (!(u0 <= u1 && v0 <= v1)) {
         continue; // outside the image: nothing was written
       }
       for (int v = static_cast<int>(v0); v <= static_cast<int>(v1); ++v) {
-        std::fill(m_map[v] + static_cast<int>(u0), m_map[v] + static_cast<int>(u1) + 1, 0);
+        std::fill(map.map[v] + static_cast<int>(u0), map.map[v] + static_cast<int>(u1) + 1, 0);
       }
     }
   }
-  m_mapAllWritten = true; // until computeInside() has returned (it throws on a non-finite rectangle)
-  match.computeInside(I, rois, m_map);
-  m_mapWritten.assign(rois.begin(), rois.end());
-  m_mapAllWritten = false;
+  map.written.clear();
+  map.allWritten = false;
+}
+
+void vpSSLDetector::matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
+                                 const std::vector<vpRect> &rois, MatchMap &map)
+{
+  clearMap(I, map);
+  map.allWritten = true; // until computeInside() has returned (it throws on a non-finite rectangle)
+  match.computeInside(I, rois, map.map);
+  map.written.assign(rois.begin(), rois.end());
+  map.allWritten = false;
 }
 
 int vpSSLDetector::fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const

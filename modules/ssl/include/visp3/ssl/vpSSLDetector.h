@@ -5,6 +5,7 @@
 #ifndef VP_SSL_DETECTOR_H
 #define VP_SSL_DETECTOR_H
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -127,8 +128,12 @@ public:
       whose centre lies inside such a rectangle are found as long as the rectangle extends w around them. Only
       the pixels this matching reads are normalised (with the table of the whole image, so that the map is the
       one a full search gives there), and a landmark of the previous frame near a peak is re-read around its
-      previous ellipse; with setDecimation(2) that re-reading starts from the decimated peak.
-    getMatchingMap() is 0 outside the rectangles matched.
+      previous ellipse; with setDecimation(2) that re-reading starts from the decimated peak;
+    - at full resolution (setDecimation(1)), a rectangle whose predicted landmark (the previous frame's landmark
+      inside it, nearest its centre) has a smaller semi-axis of 0.625 w or more (25 px for w = 40: the envelope of
+      the decimated pass) is matched on the image decimated twice, as with setDecimation(2), a tenth of the work;
+      if no landmark is read there, it is matched again at full resolution.
+    getMatchingMap() is 0 outside the rectangles matched at its resolution (getMapRegions()).
   */
   void setRegionsOfInterest(const std::vector<vpRect> &rois);
   /*!
@@ -136,6 +141,12 @@ public:
     centre (setRegionsOfInterest()). Empty after a full search.
   */
   const std::vector<vpRect> &getMatchedRegions() const { return m_pendingRois; }
+  /*!
+    Regions of the last tracking frame matched at the resolution of getMatchingMap(): getMatchedRegions() but for
+    those of a full-resolution detector (setDecimation(1)) whose predicted landmark was matched, and read, on the
+    decimated image (setRegionsOfInterest()). Empty after a full search.
+  */
+  const std::vector<vpRect> &getMapRegions() const { return m_mapRois; }
   /*!
     Full-search period n of the tracking mode (default 10, paper Sec. 4.1): while regions of interest
     are set, every n-th detect() call (the n-th, 2n-th, ... since the regions were first set) searches
@@ -161,10 +172,11 @@ public:
   //! Stage times of the last detection.
   const vpSSLDetectorTimes &getTimes() const { return m_times; }
   /*!
-    Matching map of the last detection (zero outside the regions of interest matched), at the resolution it was
-    computed: half the image's with decimation 2 (setDecimation()), twice in the small-landmark mode.
+    Matching map of the last detection (zero outside the regions of interest of getMapRegions() in a tracking
+    frame), at the resolution it was computed: half the image's with decimation 2 (setDecimation()), twice in the
+    small-landmark mode.
   */
-  const vpImage<int> &getMatchingMap() const { return m_map; }
+  const vpImage<int> &getMatchingMap() const { return m_mainMap.map; }
   //! The matching function in use.
   const vpSSLMatchingFunction &getMatchingFunction() const { return m_match; }
 
@@ -184,9 +196,25 @@ public:
   static double range(const vpSSLLandmark &landmark, double radius, const vpCameraParameters &cam);
 
 private:
+  // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
+  struct MatchMap
+  {
+    vpImage<int> map;
+    std::vector<vpRect> written;
+    bool allWritten = true; // whether the last call wrote the whole map (or it is uninitialised)
+  };
+
   void fillObjects();
+  // Normalisation, matching and peaks of the whole image (\e regions nullptr) or of regions, at full resolution or
+  // on the image decimated twice (\e coarse), then the ring reading of the peaks; the stage times are added up.
+  void searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &raw, bool coarse,
+                     const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
+  // Whether the landmark a tracking frame's region predicts is large enough for the decimated pass.
+  bool largeLandmarkIn(const vpRect &r) const;
+  // Sets \e map to I's size and to 0 where the last call wrote it.
+  void clearMap(const vpImage<unsigned char> &I, MatchMap &map);
   void matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
-                    const std::vector<vpRect> &rois);
+                    const std::vector<vpRect> &rois, MatchMap &map);
   int fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const;
   void normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach);
   int crossMatch(int u, int v) const;
@@ -215,8 +243,13 @@ private:
   double m_maxRadius;
   double m_threshold;
   std::vector<vpRect> m_rois;
-  std::vector<vpRect> m_noRois;      // always empty: the whole image
-  std::vector<vpRect> m_pendingRois; // regions of this tracking frame whose landmark was not re-read directly
+  std::vector<vpRect> m_noRois;       // always empty: the whole image
+  std::vector<vpRect> m_pendingRois;  // regions of this tracking frame whose landmark was not re-read directly
+  std::vector<size_t> m_pendingIndex; // their indices in m_rois
+  // Regions of a full-resolution tracking frame matched on the decimated image, their indices, and the others.
+  std::vector<vpRect> m_coarseRois, m_fineRois;
+  std::vector<size_t> m_coarseIndex;
+  std::vector<vpRect> m_mapRois; // regions of this tracking frame matched into getMatchingMap()
   unsigned int m_fullSearchPeriod;
   unsigned long m_roiCalls; // detect() calls with regions of interest since they were set
   bool m_lastSearchWasFull;
@@ -235,9 +268,8 @@ private:
   std::vector<vpSSLLandmark> m_previous; // landmarks of the previous detect(), re-read in tracking mode
   std::vector<char> m_roiFilled;         // whether a landmark has been read inside each region this frame
   std::vector<vpRect> m_scaledRois;
-  vpImage<int> m_map;
-  std::vector<vpRect> m_mapWritten; // regions the last tracking frame wrote into m_map (the rest is 0)
-  bool m_mapAllWritten = true;      // whether the last call wrote the whole map (or m_map is uninitialised)
+  MatchMap m_mainMap;   // the map of getMatchingMap()
+  MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
   std::vector<vpSSLPeak> m_peaks;
   std::vector<vpSSLLandmark> m_landmarks;
   std::vector<int> m_sweep; // Eq. 7 sweep, reused
