@@ -31,8 +31,10 @@ const double kSolidRing = 0.85;
 const double kMaxAsymmetry = 0.6;
 // Share of the best level's total score that an outer level needs to be taken for the landmark's.
 const double kLevelShare = 0.7;
-// rayCandidates() needs the outermost pair's contrast at 0.6 kMinPairContrast (3.6) or more: below this (a margin
-// for rounding) a radius is given up on.
+// Share of the pairs' mean contrast that the outermost pair needs.
+const double kOuterShare = 0.6;
+// So the outermost pair's contrast must be 0.6 kMinPairContrast (3.6) or more: below this (a margin for rounding) a
+// radius is given up on at once.
 const double kMinOuterContrast = 3.5;
 // Alternating ring pairs a ray must show, blur permitting (fewer only when fewer rings are resolvable).
 const int kMinAlternations = 3;
@@ -176,130 +178,6 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
   }
 }
 
-double vpSSLRadiusEstimator::rayScore(int d, double radius, double &outerContrast, int &nbPairsOut,
-                                      int &nbExpected) const
-{
-  const std::vector<float> &P = m_profile[d];
-  const std::vector<double> &C = m_prefix[d];
-  const double q = m_q;
-  // Integral of the profile from 0 to rho, linear between samples (rho / m_step as a product: m_step is a
-  // power of two, so both are exact).
-  const float *p = P.data();
-  const double *c = C.data();
-  const size_t lastC = C.size() - 1, nbP = P.size();
-  const double invStep = 1. / m_step, step = m_step;
-  auto integral = [=](double rho) {
-    const double k = rho * invStep;
-    const size_t i = std::min(static_cast<size_t>(k), lastC);
-    const double f = k - static_cast<double>(i);
-    if (i + 1 >= nbP) {
-      return c[i];
-    }
-    const double pr = p[i] + 0.5 * f * (p[i + 1] - p[i]);
-    return c[i] + f * step * pr;
-  };
-  // Contrast of each pair of adjacent rings, signed so that it is positive where the rings alternate
-  // as printed: ring k is black for even k (the outermost ring is black), white for odd k.
-  double contrast[64], level[65];
-  int nb = 0;
-  double previous = 0., outerEdge = radius, cmax = 0.;
-  // Each ring's outer edge is the previous one's inner edge: its integral is carried over.
-  double outerIntegral = integral(outerEdge);
-  // Clearly resolvable pairs at this radius, before the cap by the pairs read (nbExpected below): only
-  // min(clearPairs, 4) matters below (it is compared with at most 3 pairs), counted when first needed.
-  int clearPairs = -1;
-  for (int k = 0; nb < 64; ++k) {
-    const double innerEdge = outerEdge * q;
-    if (outerEdge - innerEdge < kMinRingWidth * m_pixelScale || innerEdge < kMinRingRadius * m_pixelScale) {
-      break;
-    }
-    const double innerIntegral = integral(innerEdge);
-    const double mean = (outerIntegral - innerIntegral) / (outerEdge - innerEdge);
-    outerIntegral = innerIntegral;
-    level[k] = mean;
-    if (k > 0) {
-      contrast[nb] = ((k - 1) % 2 == 0) ? mean - previous : previous - mean;
-      cmax = std::max(cmax, contrast[nb]);
-      ++nb;
-      // The screen of rayCandidates() (vpSSLRayKernel::screen()) runs this test and the next one in SIMD.
-      if (nb == 1 && contrast[0] < kMinOuterContrast) {
-        nbPairsOut = 0;
-        outerContrast = contrast[0];
-        nbExpected = 0;
-        return -1e30;
-      }
-      // The pairs are counted inwards while their contrast is at least 0.25 cmax, and cmax only grows: a
-      // weaker pair ends the count here, below the alternations rayCandidates() needs (at least
-      // max(2, min(nbExpected - 1, kMinAlternations)), nbExpected >= min(clearPairs, nb)). Clutter mostly
-      // ends here, after a few rings instead of all of them; the result is the same.
-      if (nb <= kMinAlternations && clearPairs < 0) {
-        clearPairs = 0;
-        for (double r = radius * q; clearPairs < 4 && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
-          ++clearPairs;
-        }
-      }
-      const int needed = nb <= kMinAlternations ? std::max(2, std::min(std::min(clearPairs, nb) - 1, kMinAlternations))
-                                                : kMinAlternations;
-      if (nb - 1 < needed && contrast[nb - 1] < 0.25 * cmax) {
-        nbPairsOut = 0;
-        outerContrast = contrast[0];
-        nbExpected = 0;
-        return -1e30;
-      }
-    }
-    previous = mean;
-    outerEdge = innerEdge;
-  }
-  nbPairsOut = 0;
-  outerContrast = nb > 0 ? contrast[0] : 0.;
-  // Pairs whose inner ring is wide enough (kClearRingWidth) to survive a real lens: these must all alternate.
-  nbExpected = 0;
-  for (double r = radius * q; nbExpected < nb && r * (1. - q) >= kClearRingWidth * m_pixelScale; r *= q) {
-    ++nbExpected;
-  }
-  // Walking inwards, the rings must keep alternating until they blur into each other (the lens, the
-  // sampling): a clear reversal means this R is not the landmark's; a fading contrast ends the reading.
-  double score = 0.;
-  for (int i = 0; i < nb; ++i) {
-    if (contrast[i] >= 0.25 * cmax) {
-      score += contrast[i];
-      ++nbPairsOut;
-    } else if (contrast[i] <= -0.15 * cmax) {
-      return -1e30;
-    } else {
-      break;
-    }
-  }
-  if (nbPairsOut < 2) {
-    return -1e30;
-  }
-  // All black rings are printed with the same ink and seen at the same range: the outermost one must be
-  // as dark as the inner ones. Otherwise a dark background beyond the white paper passes for one more
-  // ring, and the landmark for one twice its size.
-  double black = 0., white = 0.;
-  int nbBlack = 0, nbWhite = 0;
-  // Only clearly resolved rings give the ink's level; thinner ones are greyed by the lens and sampling.
-  const int nbLevels = std::min(nbPairsOut, std::max(2, nbExpected));
-  for (int k = 1; k <= nbLevels; ++k) {
-    if (k % 2 == 0) {
-      black += level[k];
-      ++nbBlack;
-    } else {
-      white += level[k];
-      ++nbWhite;
-    }
-  }
-  black /= nbBlack;
-  white /= nbWhite;
-  // Rings too thin to be clearly resolved (a small landmark, >= 3 pairs read) are greyed by the lens and
-  // the water's blur: their black reads lighter than the wider outermost ring's, never darker.
-  const double darkTolerance = (nbExpected >= 2 || nbPairsOut < 3) ? kInkTolerance : kBlurredInkTolerance;
-  if (level[0] - black > kInkTolerance * (white - black) || black - level[0] > darkTolerance * (white - black)) {
-    return -1e30;
-  }
-  return score; // solidRings() is the caller's last test, the dearest
-}
-
 bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
 {
   const std::vector<float> &P = m_profile[d];
@@ -391,9 +269,21 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
     ray(d, grid.back());
   }
   scores.assign(grid.size(), -1e30);
-  // Most radii fail rayScore()'s tests on the two outermost ring pairs: the SIMD screen runs those tests on the
-  // whole grid at once, and rayScore() reads the radii that pass them.
-  m_survivors.resize(grid.size());
+  // Each radius is compared with the printed rings in SIMD (vpSSLRayKernel): the screen runs the tests on the two
+  // outermost ring pairs that almost every radius fails, then the rings of the radii left are all read. Walking
+  // inwards from R, the rings must keep alternating until they blur into each other (the lens, the sampling): a
+  // clear reversal means R is not the landmark's, a fading contrast ends the reading. Every clearly resolvable ring
+  // must alternate (a handful of alternations at a geometric spacing happens in clutter, a full self-similar
+  // sequence does not), and the outermost ring must stand out dark against the next one, which pins R against its
+  // p-similar copies at R / p (white paper would pass for a missing black ring) and R sqrt(p) (anti-phase). All
+  // black rings are printed with the same ink and seen at the same range: the outermost one must be as dark as
+  // the inner ones, or a dark background beyond the white paper passes for one more ring and the landmark for one
+  // twice its size. Only clearly resolved rings give the ink's level; thinner ones (a small landmark, three pairs
+  // or more read) are greyed by the lens and the water's blur, lighter than the wider outermost ring, never darker.
+  const size_t n = grid.size();
+  m_survivors.resize(n);
+  m_passed.resize(n);
+  m_passedScores.resize(n);
   const std::vector<float> &P = m_profile[d];
   const vpSSLRayKernel::Profile profile = {P.data(),
                                            m_prefix[d].data(),
@@ -404,24 +294,20 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
                                            kMinRingWidth * m_pixelScale,
                                            kMinRingRadius * m_pixelScale,
                                            kMinOuterContrast};
-  const size_t nbSurvivors =
-      grid.empty() ? 0 : vpSSLRayKernel::screen(profile, grid.data(), grid.size(), m_survivors.data());
-  for (size_t k = 0; k < nbSurvivors; ++k) {
-    const size_t i = m_survivors[k];
-    double outer;
-    int nbPairs, nbExpected;
-    const double s = rayScore(d, grid[i], outer, nbPairs, nbExpected);
-    // Every clearly resolvable ring must alternate: a handful of alternations at a geometric spacing
-    // happens in clutter, a full self-similar sequence does not.
-    if (nbPairs < std::max(2, std::min(nbExpected - 1, kMinAlternations))) {
-      continue;
+  const vpSSLRayKernel::ScoreRules rules = {kClearRingWidth * m_pixelScale,
+                                            kMinPairContrast,
+                                            kOuterShare,
+                                            kMinAlternations,
+                                            kInkTolerance,
+                                            kBlurredInkTolerance};
+  const size_t nbSurvivors = n == 0 ? 0 : vpSSLRayKernel::screen(profile, grid.data(), n, m_survivors.data());
+  const size_t nbPassed = vpSSLRayKernel::score(profile, rules, grid.data(), m_survivors.data(), nbSurvivors,
+                                                m_passed.data(), m_passedScores.data());
+  for (size_t k = 0; k < nbPassed; ++k) {
+    // The dearest test, last.
+    if (solidRings(d, grid[m_passed[k]])) {
+      scores[m_passed[k]] = m_passedScores[k];
     }
-    // The outermost ring must stand out dark against the next one: this pins R against the p-similar
-    // copies at R / p (white paper would pass for a missing black ring) and R * sqrt(p) (anti-phase).
-    if (s < kMinPairContrast * nbPairs || outer < 0.6 * s / nbPairs || !solidRings(d, grid[i])) {
-      continue;
-    }
-    scores[i] = s;
   }
   // Every local maximum is a candidate: the landmark's R, its p-similar inner copies R p^k, and whatever
   // the clutter around it makes of R / p. The rays decide together (estimate()).

@@ -87,32 +87,50 @@ void SampleImpl(const Ray &ray, std::size_t i0, std::size_t i1, float *out)
   }
 }
 
+// vpSSLRadiusEstimator::rayScore()'s integral(): the running integral of the profile, linear between samples.
+template <class D> class Integral
+{
+public:
+  using V = hn::Vec<D>;
+  Integral(D d, const Profile &profile)
+      : m_d(d), m_profile(profile), m_invStep(hn::Set(d, profile.invStep)), m_step(hn::Set(d, profile.step)),
+        m_half(hn::Set(d, 0.5)), m_last(hn::Set(hn::Rebind<int32_t, D>(), static_cast<int32_t>(profile.n - 1))),
+        m_lastD(hn::Set(d, static_cast<double>(profile.n - 1))), m_one(hn::Set(hn::Rebind<int32_t, D>(), 1))
+  {
+  }
+  V operator()(V rho) const
+  {
+    const hn::Rebind<int32_t, D> di;
+    const hn::Rebind<int64_t, D> dl;
+    const hn::Rebind<float, D> df;
+    const V k = hn::Mul(rho, m_invStep);
+    const auto i = hn::Min(hn::DemoteTo(di, k), m_last); // truncation: rho >= 0
+    const V fi = hn::PromoteTo(m_d, i);
+    const V f = hn::Sub(k, fi);
+    const auto i1 = hn::Min(hn::Add(i, m_one), m_last);
+    const auto p0 = hn::GatherIndex(df, m_profile.p, i), p1 = hn::GatherIndex(df, m_profile.p, i1);
+    const V ci = hn::GatherIndex(m_d, m_profile.c, hn::PromoteTo(dl, i));
+    const V pr = hn::Add(hn::PromoteTo(m_d, p0), hn::Mul(hn::Mul(m_half, f), hn::PromoteTo(m_d, hn::Sub(p1, p0))));
+    const V inside = hn::Add(ci, hn::Mul(hn::Mul(f, m_step), pr));
+    // The last sample: no interpolation past it.
+    return hn::IfThenElse(hn::Eq(fi, m_lastD), ci, inside);
+  }
+
+private:
+  D m_d;
+  const Profile &m_profile;
+  V m_invStep, m_step, m_half;
+  hn::Vec<hn::Rebind<int32_t, D>> m_last;
+  V m_lastD;
+  hn::Vec<hn::Rebind<int32_t, D>> m_one;
+};
+
 std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors)
 {
   const hn::ScalableTag<double> d;
-  const hn::Rebind<int32_t, decltype(d)> di;
-  const hn::Rebind<int64_t, decltype(d)> dl;
-  const hn::Rebind<float, decltype(d)> df;
   using V = hn::Vec<decltype(d)>;
   const std::size_t N = hn::Lanes(d);
-  const auto vInvStep = hn::Set(d, profile.invStep), vStep = hn::Set(d, profile.step), vHalf = hn::Set(d, 0.5);
-  const auto vLast = hn::Set(di, static_cast<int32_t>(profile.n - 1));
-  const auto vLastD = hn::Set(d, static_cast<double>(profile.n - 1));
-  const auto iOne = hn::Set(di, 1);
-  // vpSSLRadiusEstimator::rayScore()'s integral(): the running integral, linear between samples.
-  auto integral = [&](V rho) {
-    const V k = hn::Mul(rho, vInvStep);
-    const auto i = hn::Min(hn::DemoteTo(di, k), vLast); // truncation: rho >= 0
-    const V fi = hn::PromoteTo(d, i);
-    const V f = hn::Sub(k, fi);
-    const auto i1 = hn::Min(hn::Add(i, iOne), vLast);
-    const auto p0 = hn::GatherIndex(df, profile.p, i), p1 = hn::GatherIndex(df, profile.p, i1);
-    const V ci = hn::GatherIndex(d, profile.c, hn::PromoteTo(dl, i));
-    const V pr = hn::Add(hn::PromoteTo(d, p0), hn::Mul(hn::Mul(vHalf, f), hn::PromoteTo(d, hn::Sub(p1, p0))));
-    const V inside = hn::Add(ci, hn::Mul(hn::Mul(f, vStep), pr));
-    // The last sample: no interpolation past it.
-    return hn::IfThenElse(hn::Eq(fi, vLastD), ci, inside);
-  };
+  const Integral<decltype(d)> integral(d, profile);
   const auto vq = hn::Set(d, profile.q), vMinWidth = hn::Set(d, profile.minWidth);
   const auto vMinRadius = hn::Set(d, profile.minRadius), vMinContrast = hn::Set(d, profile.minContrast);
   const auto vQuarter = hn::Set(d, 0.25);
@@ -157,6 +175,134 @@ std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t 
   return count;
 }
 
+std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const double *radii, const uint32_t *indices,
+                      std::size_t n, uint32_t *passed, double *scores)
+{
+  const hn::ScalableTag<double> d;
+  using V = hn::Vec<decltype(d)>;
+  using M = hn::Mask<decltype(d)>;
+  const std::size_t N = hn::Lanes(d);
+  const Integral<decltype(d)> integral(d, profile);
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.), two = hn::Set(d, 2.);
+  const V vq = hn::Set(d, profile.q), vMinWidth = hn::Set(d, profile.minWidth),
+          vMinRadius = hn::Set(d, profile.minRadius);
+  const V vOneMinusQ = hn::Set(d, 1. - profile.q), vClearWidth = hn::Set(d, rules.clearWidth);
+  const V vQuarter = hn::Set(d, 0.25), vReversal = hn::Set(d, -0.15), vMinPair = hn::Set(d, rules.minPairContrast);
+  const V vOuterShare = hn::Set(d, rules.outerShare), vAlternations = hn::Set(d, rules.minAlternations);
+  const V vInk = hn::Set(d, rules.inkTolerance), vBlurredInk = hn::Set(d, rules.blurredInkTolerance);
+  const V vMaxPairs = hn::Set(d, 64.);
+  // Ring levels and pair contrasts, lane by lane, as rayScore() keeps them (at most 64 pairs).
+  constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+  HWY_ALIGN double level[65 * kMaxLanes], contrast[64 * kMaxLanes], lanes[kMaxLanes];
+  uint8_t bits[8];
+  std::size_t count = 0;
+  for (std::size_t j = 0; j < n; j += N) {
+    // The lanes past the last radius repeat it; their results are dropped.
+    for (std::size_t k = 0; k < N; ++k) {
+      lanes[k] = radii[indices[std::min(j + k, n - 1)]];
+    }
+    const V radius = hn::Load(d, lanes);
+    // The rings, out to the first one too thin or too close to the centre (rayScore()'s loop; the screen has passed
+    // its two early exits).
+    V outerEdge = radius, outerIntegral = integral(radius), previous = zero, cmax = zero, nb = zero;
+    M alive = hn::Eq(zero, zero);
+    int rings = 0;
+    for (int k = 0; k < 65; ++k) {
+      alive = hn::And(alive, hn::Lt(nb, vMaxPairs));
+      const V innerEdge = hn::Mul(outerEdge, vq);
+      const V width = hn::Sub(outerEdge, innerEdge);
+      alive = hn::And(alive, hn::And(hn::Ge(width, vMinWidth), hn::Ge(innerEdge, vMinRadius)));
+      if (hn::AllFalse(d, alive)) {
+        break;
+      }
+      const V innerIntegral = integral(innerEdge);
+      const V mean = hn::Div(hn::Sub(outerIntegral, innerIntegral), width);
+      hn::Store(mean, d, level + k * N);
+      if (k > 0) {
+        // Positive where the rings alternate as printed: ring k is black for even k.
+        const V c = ((k - 1) % 2 == 0) ? hn::Sub(mean, previous) : hn::Sub(previous, mean);
+        hn::Store(c, d, contrast + (k - 1) * N);
+        cmax = hn::IfThenElse(alive, hn::Max(cmax, c), cmax);
+        nb = hn::IfThenElse(alive, hn::Add(nb, one), nb);
+      }
+      outerIntegral = innerIntegral;
+      previous = mean;
+      outerEdge = innerEdge;
+      rings = k + 1;
+    }
+    // Pairs clear enough to be resolved by any lens.
+    V nbExpected = zero, r = hn::Mul(radius, vq);
+    for (int k = 0; k < rings; ++k) {
+      const M more = hn::And(hn::Lt(nbExpected, nb), hn::Ge(hn::Mul(r, vOneMinusQ), vClearWidth));
+      if (hn::AllFalse(d, more)) {
+        break;
+      }
+      nbExpected = hn::IfThenElse(more, hn::Add(nbExpected, one), nbExpected);
+      r = hn::IfThenElse(more, hn::Mul(r, vq), r);
+    }
+    // The alternating pairs from the outermost one inwards: a clear reversal fails the radius, a fading pair ends
+    // the count.
+    V score = zero, nbPairs = zero;
+    M counting = hn::Eq(zero, zero), failed = hn::Lt(one, zero);
+    const V weak = hn::Mul(vQuarter, cmax), reversed = hn::Mul(vReversal, cmax);
+    for (int i = 0; i + 1 < rings; ++i) {
+      counting = hn::And(counting, hn::Lt(hn::Set(d, static_cast<double>(i)), nb));
+      if (hn::AllFalse(d, counting)) {
+        break;
+      }
+      const V c = hn::Load(d, contrast + i * N);
+      const M strong = hn::Ge(c, weak);
+      failed = hn::Or(failed, hn::And(hn::AndNot(strong, counting), hn::Le(c, reversed)));
+      const M add = hn::And(counting, strong);
+      score = hn::IfThenElse(add, hn::Add(score, c), score);
+      nbPairs = hn::IfThenElse(add, hn::Add(nbPairs, one), nbPairs);
+      counting = add;
+    }
+    failed = hn::Or(failed, hn::Lt(nbPairs, two));
+    // The black rings' ink, from the clearly resolved rings: the outermost ring must be as dark.
+    const V nbLevels = hn::Min(nbPairs, hn::Max(two, nbExpected));
+    V black = zero, white = zero, nbBlack = zero, nbWhite = zero;
+    for (int k = 1; k < rings; ++k) {
+      const M in = hn::Le(hn::Set(d, static_cast<double>(k)), nbLevels);
+      if (hn::AllFalse(d, in)) {
+        break;
+      }
+      const V l = hn::Load(d, level + k * N);
+      if (k % 2 == 0) {
+        black = hn::IfThenElse(in, hn::Add(black, l), black);
+        nbBlack = hn::IfThenElse(in, hn::Add(nbBlack, one), nbBlack);
+      } else {
+        white = hn::IfThenElse(in, hn::Add(white, l), white);
+        nbWhite = hn::IfThenElse(in, hn::Add(nbWhite, one), nbWhite);
+      }
+    }
+    // Lanes that failed above may have no level of a colour: their quotient is not used.
+    black = hn::Div(black, hn::Max(nbBlack, one));
+    white = hn::Div(white, hn::Max(nbWhite, one));
+    const V outer = hn::Load(d, level);
+    const V dark = hn::IfThenElse(hn::Or(hn::Ge(nbExpected, two), hn::Lt(nbPairs, hn::Set(d, 3.))), vInk, vBlurredInk);
+    const V range = hn::Sub(white, black);
+    failed = hn::Or(failed, hn::Or(hn::Gt(hn::Sub(outer, black), hn::Mul(vInk, range)),
+                                   hn::Gt(hn::Sub(black, outer), hn::Mul(dark, range))));
+    // rayCandidates(): every clearly resolvable pair must alternate, the pairs must be strong on average and the
+    // outermost one with them.
+    const V needed = hn::Max(two, hn::Min(hn::Sub(nbExpected, one), vAlternations));
+    const V outerContrast = hn::Load(d, contrast);
+    failed = hn::Or(failed, hn::Or(hn::Lt(nbPairs, needed), hn::Lt(score, hn::Mul(vMinPair, nbPairs))));
+    failed = hn::Or(failed, hn::Lt(outerContrast, hn::Div(hn::Mul(vOuterShare, score), nbPairs)));
+    hn::StoreMaskBits(d, hn::Not(failed), bits);
+    hn::Store(score, d, lanes);
+    for (std::size_t k = 0; k < N && j + k < n; ++k) {
+      if ((bits[k / 8] >> (k % 8)) & 1) {
+        passed[count] = indices[j + k];
+        scores[count] = lanes[k];
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
 // NOLINTNEXTLINE(google-readability-namespace-comments)
 } // namespace HWY_NAMESPACE
 } // namespace vpSSLRayKernel
@@ -166,6 +312,7 @@ HWY_AFTER_NAMESPACE();
 namespace vpSSLRayKernel {
 HWY_EXPORT(SampleImpl);
 HWY_EXPORT(ScreenImpl);
+HWY_EXPORT(ScoreImpl);
 
 void sample(const Ray &ray, std::size_t i0, std::size_t i1, float *out)
 {
@@ -175,6 +322,12 @@ void sample(const Ray &ray, std::size_t i0, std::size_t i1, float *out)
 std::size_t screen(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors)
 {
   return HWY_DYNAMIC_DISPATCH(ScreenImpl)(profile, radii, n, survivors);
+}
+
+std::size_t score(const Profile &profile, const ScoreRules &rules, const double *radii, const uint32_t *indices,
+                  std::size_t n, uint32_t *passed, double *scores)
+{
+  return HWY_DYNAMIC_DISPATCH(ScoreImpl)(profile, rules, radii, indices, n, passed, scores);
 }
 } // namespace vpSSLRayKernel
 #endif

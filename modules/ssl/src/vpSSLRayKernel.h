@@ -44,6 +44,20 @@ struct Profile
 };
 
 /*!
+  Tests of a ring reading besides the profile's (vpSSLRadiusEstimator::rayScore() and rayCandidates()): the
+  thresholds of its ring pairs and of the ink's level.
+*/
+struct ScoreRules
+{
+  double clearWidth;          //!< Ring width (px) that any lens resolves: those pairs must all alternate.
+  double minPairContrast;     //!< Least mean contrast of the pairs read.
+  double outerShare;          //!< Least share of that mean the outermost pair must show.
+  int minAlternations;        //!< Pairs that must alternate where at least that many are clearly resolved.
+  double inkTolerance;        //!< How far the outermost black ring's level may stray from the inner ones'.
+  double blurredInkTolerance; //!< The same on the dark side when fewer than two pairs are clearly resolved.
+};
+
+/*!
   Indices i in [0, n) of the radii R = radii[i] at which the ray's three outermost rings ([q R, R], [q^2 R, q R],
   [q^3 R, q^2 R]) are all readable, the outermost pair's contrast (white minus black) is at least
   profile.minContrast, and the next pair's is at least a quarter of the larger of the two: the tests that end
@@ -51,6 +65,17 @@ struct Profile
   \return their number.
 */
 std::size_t screen(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors);
+
+/*!
+  Reads the ray at the radii radii[indices[k]], k in [0, n) (radii that passed screen()): every ring out to the first
+  one too thin to be read, the pairs that alternate from the outermost one inwards, the ink's level, and the tests of
+  the reading as a whole (vpSSLRadiusEstimator::rayCandidates(), its solid-ring test aside). The index and score (the
+  sum of the alternating pairs' contrasts) of each radius that passes are written to \e passed and \e scores, in
+  the order of \e indices.
+  \return their number.
+*/
+std::size_t score(const Profile &profile, const ScoreRules &rules, const double *radii, const uint32_t *indices,
+                  std::size_t n, uint32_t *passed, double *scores);
 } // namespace vpSSLRayKernel
 
 #endif

@@ -95,7 +95,6 @@ private:
   bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
   bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
                     double R[8], bool ok[8]);
-  double rayScore(int d, double radius, double &outerContrast, int &nbPairs, int &nbExpected) const;
   bool solidRings(int d, double radius) const;
   bool ringEdge(int d, double expected, double halfWidth, double &position);
   bool ringsAllAround(const vpImage<unsigned char> &I, double u, double v,
@@ -113,7 +112,8 @@ private:
   std::vector<double> m_prefix[8];
   mutable std::vector<double> m_mean3[8];       // means of three neighbouring samples (solidRings()), read as needed
   mutable std::vector<double> m_grid, m_scores; // radius search scratch
-  std::vector<uint32_t> m_survivors;            // radii of the grid that pass the SIMD screen
+  std::vector<uint32_t> m_survivors, m_passed;  // radii of the grid that pass the SIMD screen, and all its tests
+  std::vector<double> m_passedScores;           // the scores of the latter
   std::vector<Candidate> m_candidates[8];
   std::vector<double> m_valid; // selectRadii() scratch
   // Centre of the rays (readRays()); each ray is read on first use (ray()).
