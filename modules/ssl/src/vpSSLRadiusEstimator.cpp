@@ -243,18 +243,22 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
     m_fullGridMin = m_minRadius;
     m_fullGridMax = m_maxRadius;
   }
-  auto first = m_fullGrid.begin();
-  if (m_levelZeroOnly && ref > 0.) {
-    // Tracked: the grid below the previous level's window is not even looked at.
-    first = std::lower_bound(m_fullGrid.begin(), m_fullGrid.end(), ref * std::exp(-(kTrackedWindow + 0.01) * logStep));
-  }
-  for (auto it = first; it != m_fullGrid.end(); ++it) {
-    const double r = *it;
-    if (r > rMax) {
-      break;
+  // From the whole range, the grid is a prefix of the full one; given a first reading, only the p-similar levels
+  // around it are worth a look.
+  const double *g = m_fullGrid.data();
+  size_t n = static_cast<size_t>(std::upper_bound(m_fullGrid.begin(), m_fullGrid.end(), rMax) - m_fullGrid.begin());
+  if (ref > 0.) {
+    auto first = m_fullGrid.begin();
+    if (m_levelZeroOnly) {
+      // Tracked: the grid below the previous level's window is not even looked at.
+      first =
+          std::lower_bound(m_fullGrid.begin(), m_fullGrid.end(), ref * std::exp(-(kTrackedWindow + 0.01) * logStep));
     }
-    // Given a first reading, only the p-similar levels around it are worth a look.
-    if (ref > 0.) {
+    for (auto it = first; it != m_fullGrid.end(); ++it) {
+      const double r = *it;
+      if (r > rMax) {
+        break;
+      }
       const double x = std::log(r / ref) / logStep;
       if (m_levelZeroOnly && x > kTrackedWindow) {
         break; // tracked: the previous level only
@@ -262,13 +266,15 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
       if (std::fabs(x - std::round(x)) > 0.3 || (m_levelZeroOnly && x < -kTrackedWindow)) {
         continue;
       }
+      grid.push_back(r);
     }
-    grid.push_back(r);
+    g = grid.data();
+    n = grid.size();
   }
-  if (!grid.empty()) {
-    ray(d, grid.back());
+  if (n > 0) {
+    ray(d, g[n - 1]);
   }
-  scores.assign(grid.size(), -1e30);
+  scores.assign(n, -1e30);
   // Each radius is compared with the printed rings in SIMD (vpSSLRayKernel): the screen runs the tests on the two
   // outermost ring pairs that almost every radius fails, then the rings of the radii left are all read. Walking
   // inwards from R, the rings must keep alternating until they blur into each other (the lens, the sampling): a
@@ -280,7 +286,6 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
   // the inner ones, or a dark background beyond the white paper passes for one more ring and the landmark for one
   // twice its size. Only clearly resolved rings give the ink's level; thinner ones (a small landmark, three pairs
   // or more read) are greyed by the lens and the water's blur, lighter than the wider outermost ring, never darker.
-  const size_t n = grid.size();
   m_survivors.resize(n);
   m_passed.resize(n);
   m_passedScores.resize(n);
@@ -300,28 +305,31 @@ void vpSSLRadiusEstimator::rayCandidates(int d, double ref, std::vector<Candidat
                                             kMinAlternations,
                                             kInkTolerance,
                                             kBlurredInkTolerance};
-  const size_t nbSurvivors = n == 0 ? 0 : vpSSLRayKernel::screen(profile, grid.data(), n, m_survivors.data());
-  const size_t nbPassed = vpSSLRayKernel::score(profile, rules, grid.data(), m_survivors.data(), nbSurvivors,
-                                                m_passed.data(), m_passedScores.data());
+  const size_t nbSurvivors = n == 0 ? 0 : vpSSLRayKernel::screen(profile, g, n, m_survivors.data());
+  const size_t nbPassed =
+      vpSSLRayKernel::score(profile, rules, g, m_survivors.data(), nbSurvivors, m_passed.data(), m_passedScores.data());
+  size_t nbScored = 0;
   for (size_t k = 0; k < nbPassed; ++k) {
     // The dearest test, last.
-    if (solidRings(d, grid[m_passed[k]])) {
+    if (solidRings(d, g[m_passed[k]])) {
       scores[m_passed[k]] = m_passedScores[k];
+      m_passed[nbScored++] = m_passed[k];
     }
   }
   // Every local maximum is a candidate: the landmark's R, its p-similar inner copies R p^k, and whatever
-  // the clutter around it makes of R / p. The rays decide together (estimate()).
-  for (size_t i = 0; i < grid.size(); ++i) {
+  // the clutter around it makes of R / p. The rays decide together (estimate()). Only scored radii can be one.
+  for (size_t k = 0; k < nbScored; ++k) {
+    const size_t i = m_passed[k];
     const double b = scores[i];
     // Neighbours on the grid only (the level windows leave gaps in it).
-    const bool left = i > 0 && grid[i - 1] > grid[i] / (1.5 * kGridRatio);
-    const bool right = i + 1 < grid.size() && grid[i + 1] < grid[i] * 1.5 * kGridRatio;
+    const bool left = i > 0 && g[i - 1] > g[i] / (1.5 * kGridRatio);
+    const bool right = i + 1 < n && g[i + 1] < g[i] * 1.5 * kGridRatio;
     const double a = left ? scores[i - 1] : -1e30, c = right ? scores[i + 1] : -1e30;
     if (b <= -1e29 || a > b || c >= b) {
       continue;
     }
     Candidate cand;
-    cand.radius = grid[i];
+    cand.radius = g[i];
     cand.score = b;
     if (a > -1e29 && c > -1e29) {
       const double den = a - 2. * b + c;
