@@ -165,18 +165,21 @@ TEST(DetectorRoi, EveryNthFrameSearchesTheWholeImageAsInSec41)
 TEST(DetectorRoi, NoHeapAllocationInSteadyState)
 {
   const View &v = view();
-  std::vector<vpRect> rois;
+  // Regions centred on the landmarks (re-read from there) and 20 px off them (matched, on the decimated image for
+  // the large ones).
+  std::vector<vpRect> rois, offRois;
   for (const vpImagePoint &c : v.centres) {
     rois.push_back(roiAround(c));
+    offRois.push_back(roiAround(vpImagePoint(c.get_i(), c.get_j() + 20.)));
   }
   const vpSSLTargetIdentifier identifier(vpSSLTarget::ssl3a3());
-  for (int mode = 0; mode < 3; ++mode) {
+  for (int mode = 0; mode < 4; ++mode) {
     vpSSLDetector detector;
     detector.setNbThreads(1);
     detector.setSmallLandmarkMode(mode == 2);
-    if (mode == 1) {
+    if (mode == 1 || mode == 3) {
       detector.setFullSearchPeriod(3);
-      detector.setRegionsOfInterest(rois);
+      detector.setRegionsOfInterest(mode == 1 ? rois : offRois);
     }
     // Buffers grow during the first calls (a full-search frame included in ROI mode).
     for (int k = 0; k < 4; ++k) {
@@ -191,6 +194,9 @@ TEST(DetectorRoi, NoHeapAllocationInSteadyState)
       }
       ASSERT_EQ(nbFound(detector, v.centres), 3u) << "mode " << mode;
       EXPECT_EQ(detectNew, 0) << "mode " << mode << ", call " << k;
+      if (mode == 3 && !detector.getLastSearchWasFull()) {
+        EXPECT_LT(detector.getMapRegions().size(), detector.getMatchedRegions().size()) << "no decimated region";
+      }
     }
   }
 }
