@@ -36,11 +36,12 @@ struct View
   std::vector<vpImagePoint> centres; // projected landmark centres, target order
 };
 
-// ssl3-a3 at `distance` m, turned by a few degrees, through a 56-degree 640x480 camera.
-View render(double distance)
+// ssl3-a3 at `distance` m, turned by a few degrees, through a 56-degree 640x480 camera; moved by `shift` px along u.
+View render(double distance, double shift = 0.)
 {
   View v;
-  const vpHomogeneousMatrix cMo(0.02, -0.01, distance, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+  const vpHomogeneousMatrix cMo(0.02 + shift * distance / 600., -0.01, distance, vpMath::rad(10.), vpMath::rad(-8.),
+                                vpMath::rad(5.));
   vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
   renderer.setTarget(vpSSLTarget::ssl3a3());
   renderer.render(cMo, v.I);
@@ -364,13 +365,7 @@ TEST(DetectorSpeedPaths, LandmarksThatMovedFarFromThePredictionAreMatched)
   // The regions stay on the previous frame's landmarks while the target moves by 14 px: the re-reading from the
   // regions' centres cannot reach them (+-3 px per symmetry step, and the rays must stay near the start), so the
   // regions are matched and the landmarks found at their new places.
-  const View before = render(1.0);
-  View after;
-  const vpHomogeneousMatrix cMo(0.02 + 14. / 600., -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
-  vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
-  renderer.setTarget(vpSSLTarget::ssl3a3());
-  renderer.render(cMo, after.I);
-  after.centres = renderer.projectLandmarks(cMo);
+  const View before = render(1.0), after = render(1.0, 14.);
   for (unsigned int decimation : {1u, 2u}) {
     vpSSLDetector detector;
     detector.setNbThreads(1);
@@ -395,12 +390,7 @@ TEST(DetectorSpeedPaths, LargePredictedLandmarksAreMatchedOnTheDecimatedImage)
   // At full resolution, a region whose predicted landmark has a smaller semi-axis of 25 px or more is matched on the
   // decimated image; the landmarks are those a full search reads. The target moved by 14 px, too far for the
   // re-reading from the regions' centres.
-  const View before = render(1.0);
-  View after;
-  const vpHomogeneousMatrix cMo(0.02 + 14. / 600., -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
-  vpSSLRenderer renderer(vpCameraParameters(600., 600., 319.5, 239.5), 640, 480);
-  renderer.setTarget(vpSSLTarget::ssl3a3());
-  renderer.render(cMo, after.I);
+  const View before = render(1.0), after = render(1.0, 14.);
   vpSSLDetector reference;
   reference.setNbThreads(1);
   ASSERT_TRUE(reference.detect(after.I));

@@ -177,22 +177,26 @@ vpImage<unsigned char> photograph()
   return I;
 }
 
-// rayScore()'s integral of the profile and its first two ring pairs, as they were, in plain scalar code: whether
+// rayScore()'s integral of the profile from 0 to rho, linear between samples, as it was.
+double referenceIntegral(const std::vector<float> &P, const std::vector<double> &C, double step, double rho)
+{
+  const size_t lastC = C.size() - 1, nbP = P.size();
+  const double k = rho * (1. / step);
+  const size_t i = std::min(static_cast<size_t>(k), lastC);
+  const double f = k - static_cast<double>(i);
+  if (i + 1 >= nbP) {
+    return C[i];
+  }
+  const double pr = P[i] + 0.5 * f * (P[i + 1] - P[i]);
+  return C[i] + f * step * pr;
+}
+
+// rayScore()'s first two ring pairs, as they were, in plain scalar code: whether
 // the radius R goes on past them.
 bool referenceSurvives(const std::vector<float> &P, const std::vector<double> &C, double step, double q,
                        double minWidth, double minRadius, double R)
 {
-  const size_t lastC = C.size() - 1, nbP = P.size();
-  auto integral = [&](double rho) {
-    const double k = rho * (1. / step);
-    const size_t i = std::min(static_cast<size_t>(k), lastC);
-    const double f = k - static_cast<double>(i);
-    if (i + 1 >= nbP) {
-      return C[i];
-    }
-    const double pr = P[i] + 0.5 * f * (P[i + 1] - P[i]);
-    return C[i] + f * step * pr;
-  };
+  auto integral = [&](double rho) { return referenceIntegral(P, C, step, rho); };
   double outerEdge = R, outerIntegral = integral(R), previous = 0., cmax = 0.;
   for (int k = 0; k < 3; ++k) {
     const double innerEdge = outerEdge * q;
@@ -226,17 +230,7 @@ bool referenceSurvives(const std::vector<float> &P, const std::vector<double> &C
 bool referenceScore(const std::vector<float> &P, const std::vector<double> &C, double step, double q, double minWidth,
                     double minRadius, double clearWidth, double R, double &score)
 {
-  const size_t lastC = C.size() - 1, nbP = P.size();
-  auto integral = [&](double rho) {
-    const double k = rho * (1. / step);
-    const size_t i = std::min(static_cast<size_t>(k), lastC);
-    const double f = k - static_cast<double>(i);
-    if (i + 1 >= nbP) {
-      return C[i];
-    }
-    const double pr = P[i] + 0.5 * f * (P[i + 1] - P[i]);
-    return C[i] + f * step * pr;
-  };
+  auto integral = [&](double rho) { return referenceIntegral(P, C, step, rho); };
   double contrast[64], level[65];
   int nb = 0;
   double previous = 0., outerEdge = R, cmax = 0.;
