@@ -458,7 +458,7 @@ bool vpSSLDetector::largeLandmarkIn(const vpRect &r) const
 {
   // The landmark of the previous frame inside the region and nearest its centre: the one the region predicts. The
   // decimated pass finds every landmark whose smaller semi-axis is 0.625 w or more (25 px for w = 40, setDecimation());
-  // between two frames the apparent size changes by far less than the margin kept here.
+  // one that shrank below it since, or that the decimated pass misses, is matched again at full resolution.
   const double cu = r.getLeft() + 0.5 * r.getWidth(), cv = r.getTop() + 0.5 * r.getHeight();
   const vpSSLLandmark *nearest = nullptr;
   double nearestDistance = 0.;
