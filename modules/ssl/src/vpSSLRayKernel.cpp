@@ -8,7 +8,10 @@
   - sample(): consecutive samples of a ray, their four neighbours gathered as two 32-bit words at byte offsets
     (the low bytes are a pixel and its right neighbour);
   - screen(): consecutive radii of the grid, each lane computing the three outermost rings' mean levels from the
-    ray's running integral (gathers) and the two tests on them that end almost every scalar rayScore() call.
+    ray's running integral (gathers) and the two tests on them that ended almost every call of the scalar ring test
+    these kernels replaced (vpSSLRadiusEstimator::rayScore(); its copy is test_ring_kernels' reference);
+  - score(): the radii that pass, each lane reading every ring of its radius and the tests on the whole reading,
+    lanes that finish at different rings held under masks.
   The arithmetic is the scalar code's, operation for operation, in doubles (the profile's differences in floats,
   as there); this file is compiled with -ffp-contract=off so that no multiply-add is fused: the results are those
   of the scalar code bit for bit on every target.
@@ -87,7 +90,7 @@ void SampleImpl(const Ray &ray, std::size_t i0, std::size_t i1, float *out)
   }
 }
 
-// vpSSLRadiusEstimator::rayScore()'s integral(): the running integral of the profile, linear between samples.
+// The scalar ring test's integral: the running integral of the profile, linear between samples.
 template <class D> class Integral
 {
 public:
@@ -149,7 +152,7 @@ std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t 
       e0 = hn::Load(d, tail);
     }
     const V e1 = hn::Mul(e0, vq), e2 = hn::Mul(e1, vq), e3 = hn::Mul(e2, vq);
-    // rayScore() stops at the first ring narrower than minWidth or closer than minRadius to the centre; with fewer
+    // The ring test stops at the first ring narrower than minWidth or closer than minRadius to the centre; with fewer
     // than three rings it has fewer than two pairs and fails.
     const auto readable = hn::And(hn::And(hn::Ge(hn::Sub(e0, e1), vMinWidth), hn::Ge(hn::Sub(e1, e2), vMinWidth)),
                                   hn::And(hn::And(hn::Ge(hn::Sub(e2, e3), vMinWidth), hn::Ge(e1, vMinRadius)),
@@ -191,7 +194,7 @@ std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const dou
   const V vOuterShare = hn::Set(d, rules.outerShare), vAlternations = hn::Set(d, rules.minAlternations);
   const V vInk = hn::Set(d, rules.inkTolerance), vBlurredInk = hn::Set(d, rules.blurredInkTolerance);
   const V vMaxPairs = hn::Set(d, 64.);
-  // Ring levels and pair contrasts, lane by lane, as rayScore() keeps them (at most 64 pairs).
+  // Ring levels and pair contrasts, lane by lane, as the scalar ring test kept them (at most 64 pairs).
   constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
   HWY_ALIGN double level[65 * kMaxLanes], contrast[64 * kMaxLanes], lanes[kMaxLanes];
   uint8_t bits[8];
@@ -202,8 +205,8 @@ std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const dou
       lanes[k] = radii[indices[std::min(j + k, n - 1)]];
     }
     const V radius = hn::Load(d, lanes);
-    // The rings, out to the first one too thin or too close to the centre (rayScore()'s loop; the screen has passed
-    // its two early exits).
+    // The rings, out to the first one too thin or too close to the centre (the scalar test's loop; the screen has
+    // passed its two early exits).
     V outerEdge = radius, outerIntegral = integral(radius), previous = zero, cmax = zero, nb = zero;
     M alive = hn::Eq(zero, zero);
     int rings = 0;

@@ -1,7 +1,7 @@
 /*
   Private interface of the ray reading of vpSSLRadiusEstimator in SIMD: the bilinear samples of a ray and the
   screening of the radius grid by the two outermost ring pairs, implemented with Google Highway in
-  vpSSLRayKernel.cpp and picked at run time for the CPU. Both give the values of the scalar code they replace,
+  vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of the scalar code they replace,
   bit for bit (the same double operations in the same order, compiled without contraction into fused
   multiply-adds): test_ray_kernel.
 */
@@ -29,7 +29,7 @@ struct Ray
 */
 void sample(const Ray &ray, std::size_t i0, std::size_t i1, float *out);
 
-//! A ray's profile and where its rings are too thin to be read (vpSSLRadiusEstimator::rayScore()).
+//! A ray's profile and where its rings are too thin to be read.
 struct Profile
 {
   const float *p;     //!< Samples, one every \e step px from the centre.
@@ -44,7 +44,7 @@ struct Profile
 };
 
 /*!
-  Tests of a ring reading besides the profile's (vpSSLRadiusEstimator::rayScore() and rayCandidates()): the
+  Tests of a ring reading besides the profile's (vpSSLRadiusEstimator::rayCandidates()): the
   thresholds of its ring pairs and of the ink's level.
 */
 struct ScoreRules
@@ -61,8 +61,8 @@ struct ScoreRules
   Indices i in [0, n) of the radii R = radii[i] at which the ray's three outermost rings ([q R, R], [q^2 R, q R],
   [q^3 R, q^2 R]) are all readable, the outermost pair's contrast (white minus black) is at least
   profile.minContrast, and the next pair's is at least a quarter of the larger of the two: the tests that end
-  rayScore() at every other radius. Written to \e survivors in increasing order.
-  \return their number.
+  the scalar ring test (vpSSLRadiusEstimator::rayScore() until these kernels) at every other radius. Written to \e
+  survivors in increasing order. \return their number.
 */
 std::size_t screen(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors);
 
