@@ -1,9 +1,9 @@
 /*
-  Private interface of the ray reading of vpSSLRadiusEstimator in SIMD: the bilinear samples of a ray and the
-  screening of the radius grid by the two outermost ring pairs, implemented with Google Highway in
-  vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of the scalar code they replace,
-  bit for bit (the same double operations in the same order, compiled without contraction into fused
-  multiply-adds): test_ray_kernel.
+  Private interface of the ray reading of vpSSLRadiusEstimator in SIMD: the bilinear samples of a ray, the
+  screening of the radius grid by the two outermost ring pairs and the reading of the radii left, implemented with
+  Google Highway in vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of the scalar code they
+  replace, bit for bit (the same double operations in the same order, compiled without contraction into fused
+  multiply-adds): test_ring_kernels.
 */
 #ifndef VP_SSL_RAY_KERNEL_H
 #define VP_SSL_RAY_KERNEL_H
