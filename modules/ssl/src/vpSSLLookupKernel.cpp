@@ -32,10 +32,12 @@ void ApplyTableImpl(const uint8_t *lut, const uint8_t *src, uint8_t *dst, std::s
   const hn::ScalableTag<uint8_t> d;
   using V = hn::Vec<decltype(d)>;
   const std::size_t N = hn::Lanes(d);
+#if !HWY_HAVE_SCALABLE
   V table[16];
   for (int h = 0; h < 16; ++h) {
     table[h] = hn::LoadDup128(d, lut + 16 * h);
   }
+#endif
   const V bias = hn::Set(d, 0x70);
   std::size_t i = 0;
   for (; i + N <= n; i += N) {
@@ -43,7 +45,13 @@ void ApplyTableImpl(const uint8_t *lut, const uint8_t *src, uint8_t *dst, std::s
     V r = hn::Zero(d);
     for (int h = 0; h < 16; ++h) {
       const V idx = hn::SaturatedAdd(hn::Xor(x, hn::Set(d, static_cast<uint8_t>(16 * h))), bias);
+#if HWY_HAVE_SCALABLE
+      // Vectors of scalable targets (SVE) cannot be array elements: the tables are loaded as used (from L1).
+      const V table = hn::LoadDup128(d, lut + 16 * h);
+      r = hn::Or(r, hn::TableLookupBytesOr0(table, idx));
+#else
       r = hn::Or(r, hn::TableLookupBytesOr0(table[h], idx));
+#endif
     }
     hn::StoreU(r, d, dst + i);
   }

@@ -90,50 +90,35 @@ void SampleImpl(const Ray &ray, std::size_t i0, std::size_t i1, float *out)
   }
 }
 
-// The scalar ring test's integral: the running integral of the profile, linear between samples.
-template <class D> class Integral
+// The scalar ring test's integral: the running integral of the profile from 0 to rho, linear between samples. A
+// function rather than an object holding its constants: vectors of scalable targets (SVE) cannot be members.
+template <class D> HWY_INLINE hn::Vec<D> IntegralAt(D d, const Profile &profile, hn::Vec<D> rho)
 {
-public:
   using V = hn::Vec<D>;
-  Integral(D d, const Profile &profile)
-      : m_d(d), m_profile(profile), m_invStep(hn::Set(d, profile.invStep)), m_step(hn::Set(d, profile.step)),
-        m_half(hn::Set(d, 0.5)), m_last(hn::Set(hn::Rebind<int32_t, D>(), static_cast<int32_t>(profile.n - 1))),
-        m_lastD(hn::Set(d, static_cast<double>(profile.n - 1))), m_one(hn::Set(hn::Rebind<int32_t, D>(), 1))
-  {
-  }
-  V operator()(V rho) const
-  {
-    const hn::Rebind<int32_t, D> di;
-    const hn::Rebind<int64_t, D> dl;
-    const hn::Rebind<float, D> df;
-    const V k = hn::Mul(rho, m_invStep);
-    const auto i = hn::Min(hn::DemoteTo(di, k), m_last); // truncation: rho >= 0
-    const V fi = hn::PromoteTo(m_d, i);
-    const V f = hn::Sub(k, fi);
-    const auto i1 = hn::Min(hn::Add(i, m_one), m_last);
-    const auto p0 = hn::GatherIndex(df, m_profile.p, i), p1 = hn::GatherIndex(df, m_profile.p, i1);
-    const V ci = hn::GatherIndex(m_d, m_profile.c, hn::PromoteTo(dl, i));
-    const V pr = hn::Add(hn::PromoteTo(m_d, p0), hn::Mul(hn::Mul(m_half, f), hn::PromoteTo(m_d, hn::Sub(p1, p0))));
-    const V inside = hn::Add(ci, hn::Mul(hn::Mul(f, m_step), pr));
-    // The last sample: no interpolation past it.
-    return hn::IfThenElse(hn::Eq(fi, m_lastD), ci, inside);
-  }
+  const hn::Rebind<int32_t, D> di;
+  const hn::Rebind<int64_t, D> dl;
+  const hn::Rebind<float, D> df;
+  const auto last = hn::Set(di, static_cast<int32_t>(profile.n - 1));
+  const V k = hn::Mul(rho, hn::Set(d, profile.invStep));
+  const auto i = hn::Min(hn::DemoteTo(di, k), last); // truncation: rho >= 0
+  const V fi = hn::PromoteTo(d, i);
+  const V f = hn::Sub(k, fi);
+  const auto i1 = hn::Min(hn::Add(i, hn::Set(di, 1)), last);
+  const auto p0 = hn::GatherIndex(df, profile.p, i), p1 = hn::GatherIndex(df, profile.p, i1);
+  const V ci = hn::GatherIndex(d, profile.c, hn::PromoteTo(dl, i));
+  const V pr = hn::Add(hn::PromoteTo(d, p0), hn::Mul(hn::Mul(hn::Set(d, 0.5), f), hn::PromoteTo(d, hn::Sub(p1, p0))));
+  const V inside = hn::Add(ci, hn::Mul(hn::Mul(f, hn::Set(d, profile.step)), pr));
+  // The last sample: no interpolation past it.
+  return hn::IfThenElse(hn::Eq(fi, hn::Set(d, static_cast<double>(profile.n - 1))), ci, inside);
+}
 
-private:
-  D m_d;
-  const Profile &m_profile;
-  V m_invStep, m_step, m_half;
-  hn::Vec<hn::Rebind<int32_t, D>> m_last;
-  V m_lastD;
-  hn::Vec<hn::Rebind<int32_t, D>> m_one;
-};
-
-std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors)
+std::size_t ScreenImpl(const Profile &profileIn, const double *radii, std::size_t n, uint32_t *survivors)
 {
+  // A local copy: the stores below cannot alias it, so its constants stay in registers.
+  const Profile profile = profileIn;
   const hn::ScalableTag<double> d;
   using V = hn::Vec<decltype(d)>;
   const std::size_t N = hn::Lanes(d);
-  const Integral<decltype(d)> integral(d, profile);
   const auto vq = hn::Set(d, profile.q), vMinWidth = hn::Set(d, profile.minWidth);
   const auto vMinRadius = hn::Set(d, profile.minRadius), vMinContrast = hn::Set(d, profile.minContrast);
   const auto vQuarter = hn::Set(d, 0.25);
@@ -160,7 +145,8 @@ std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t 
     if (hn::AllFalse(d, readable)) {
       continue;
     }
-    const V i0 = integral(e0), i1 = integral(e1), i2 = integral(e2), i3 = integral(e3);
+    const V i0 = IntegralAt(d, profile, e0), i1 = IntegralAt(d, profile, e1), i2 = IntegralAt(d, profile, e2),
+            i3 = IntegralAt(d, profile, e3);
     const V m0 = hn::Div(hn::Sub(i0, i1), hn::Sub(e0, e1));
     const V m1 = hn::Div(hn::Sub(i1, i2), hn::Sub(e1, e2));
     const V m2 = hn::Div(hn::Sub(i2, i3), hn::Sub(e2, e3));
@@ -178,14 +164,15 @@ std::size_t ScreenImpl(const Profile &profile, const double *radii, std::size_t 
   return count;
 }
 
-std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const double *radii, const uint32_t *indices,
+std::size_t ScoreImpl(const Profile &profileIn, const ScoreRules &rules, const double *radii, const uint32_t *indices,
                       std::size_t n, uint32_t *passed, double *scores)
 {
+  // A local copy: the stores below cannot alias it, so its constants stay in registers.
+  const Profile profile = profileIn;
   const hn::ScalableTag<double> d;
   using V = hn::Vec<decltype(d)>;
   using M = hn::Mask<decltype(d)>;
   const std::size_t N = hn::Lanes(d);
-  const Integral<decltype(d)> integral(d, profile);
   const V zero = hn::Zero(d), one = hn::Set(d, 1.), two = hn::Set(d, 2.);
   const V vq = hn::Set(d, profile.q), vMinWidth = hn::Set(d, profile.minWidth),
           vMinRadius = hn::Set(d, profile.minRadius);
@@ -207,7 +194,7 @@ std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const dou
     const V radius = hn::Load(d, lanes);
     // The rings, out to the first one too thin or too close to the centre (the scalar test's loop; the screen has
     // passed its two early exits).
-    V outerEdge = radius, outerIntegral = integral(radius), previous = zero, cmax = zero, nb = zero;
+    V outerEdge = radius, outerIntegral = IntegralAt(d, profile, radius), previous = zero, cmax = zero, nb = zero;
     M alive = hn::Eq(zero, zero);
     int rings = 0;
     for (int k = 0; k < 65; ++k) {
@@ -218,7 +205,7 @@ std::size_t ScoreImpl(const Profile &profile, const ScoreRules &rules, const dou
       if (hn::AllFalse(d, alive)) {
         break;
       }
-      const V innerIntegral = integral(innerEdge);
+      const V innerIntegral = IntegralAt(d, profile, innerEdge);
       const V mean = hn::Div(hn::Sub(outerIntegral, innerIntegral), width);
       hn::Store(mean, d, level + k * N);
       if (k > 0) {
