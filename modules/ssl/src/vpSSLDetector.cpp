@@ -141,8 +141,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
 {
   auto t0 = std::chrono::steady_clock::now();
   auto t = t0;
-  // Containers are cleared, not freed: their storage is reused from frame to frame (issue 4: no heap
-  // allocation in steady state).
+  // Containers are cleared, not freed: their storage is reused from frame to frame, so that a steady stream of
+  // frames allocates nothing.
   m_nb_objects = 0;
   m_landmarks.clear();
   m_targetMatch.detection.assign(getTarget().size(), -1);
