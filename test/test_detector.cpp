@@ -181,6 +181,7 @@ TEST(Detector, RadiusSweepPeaksAtTheApparentSizeOnTheSheet)
   // extends the pattern by one ring, so on a sheet it peaks between R and R / sqrt(p) (Fig. 5 notes
   // the overestimate).
   vpSSLDetector detector(sslt::singleLandmarkTarget(kLandmarkRadius));
+  detector.setRadiusSweep(true);
   for (double r : {25., 50., 80.}) {
     View view = renderLandmark(r, 0., 0.);
     detector.detect(view.I);
@@ -189,6 +190,11 @@ TEST(Detector, RadiusSweepPeaksAtTheApparentSizeOnTheSheet)
     EXPECT_GE(eq7, 0.95 * r) << "r=" << r;
     EXPECT_LE(eq7, 1.05 * std::sqrt(2.) * r) << "r=" << r;
   }
+  // Off by default: nothing is swept.
+  vpSSLDetector plain(sslt::singleLandmarkTarget(kLandmarkRadius));
+  plain.detect(renderLandmark(50., 0., 0.).I);
+  ASSERT_EQ(plain.getLandmarks().size(), 1u);
+  EXPECT_EQ(plain.getLandmarks().front().radiusEq7, 0.);
 }
 
 TEST(Detector, VpDetectorBaseObjects)

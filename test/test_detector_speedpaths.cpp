@@ -62,6 +62,8 @@ std::vector<vpRect> roisAround(const std::vector<vpImagePoint> &centres)
 std::vector<vpSSLLandmark> run(vpSSLDetector &detector, const vpImage<unsigned char> &I, int frames)
 {
   std::vector<vpSSLLandmark> all;
+  // The fast paths must give the sweep of the plain ones too.
+  detector.setRadiusSweep(true);
   for (int k = 0; k < frames; ++k) {
     detector.detect(I);
     all.insert(all.end(), detector.getLandmarks().begin(), detector.getLandmarks().end());

@@ -83,8 +83,8 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
     : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
       m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
-      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_threshold(0.12), m_rois(), m_noRois(),
-      m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
+      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.12),
+      m_rois(), m_noRois(), m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
 {
   m_radiusEstimator.setP(target.getP());
 }
@@ -477,7 +477,9 @@ bool vpSSLDetector::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> 
 {
   const int su = static_cast<int>(std::lround(l.u)), sv = static_cast<int>(std::lround(l.v));
   const unsigned int maxWindow = static_cast<unsigned int>(1.5 * scale * m_maxRadius);
-  if (rowOnly) {
+  if (!m_radiusSweep) {
+    l.radiusEq7 = 0.;
+  } else if (rowOnly) {
     // The sweep runs along +x on the normalised row of the centre: only that row is normalised.
     const int W = static_cast<int>(raw.getWidth());
     m_sweepRow.resize(1, raw.getWidth());

@@ -106,6 +106,14 @@ public:
   //! Largest apparent radius searched (px, default 300).
   void setMaxRadius(double r);
   /*!
+    Whether each landmark also gets the paper's Eq. 7 estimate, vpSSLLandmark::radiusEq7 (default off: it is a
+    second, less accurate radius, kept to compare with the paper's Fig. 4-5; vpSSLLandmark::radius is the one to
+    use). When off, radiusEq7 is 0 and the sweep costs nothing.
+  */
+  void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
+  //! Whether the Eq. 7 sweep is computed (setRadiusSweep()).
+  bool getRadiusSweep() const { return m_radiusSweep; }
+  /*!
     Small-landmark mode (default off). The discrete matching function needs rings of a few pixels and a
     window not much larger than 1.4 times the apparent radius (beyond it the white paper around the
     landmark adds negative terms to Eq. 2), so with w = 40 at full resolution the centre of a landmark
@@ -241,6 +249,7 @@ private:
   unsigned int m_decimation;
   vpSSLMatchingFunction m_matchCoarse; // window w / 2, on the decimated image
   double m_maxRadius;
+  bool m_radiusSweep;
   double m_threshold;
   std::vector<vpRect> m_rois;
   std::vector<vpRect> m_noRois;       // always empty: the whole image

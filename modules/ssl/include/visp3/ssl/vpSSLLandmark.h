@@ -27,7 +27,8 @@ struct VISP_SSL_EXPORT vpSSLLandmark
   double minorRadius = 0.; ///< Minor semi-axis of the outer ellipse (px).
   double theta = 0.;       ///< Angle of the major axis from the u axis (rad, towards +v).
   double score = 0.;       ///< Matching function at the centre, normalised to [0, 1] (paper Eq. 5).
-  double radiusEq7 = 0.;   ///< The paper's estimate: argmax over w of the +x matching sum (Eq. 7), in px.
+  double radiusEq7 = 0.;   ///< The paper's estimate: argmax over w of the +x matching sum (Eq. 7), in px; 0 unless
+                           ///< vpSSLDetector::setRadiusSweep().
   double directionalRadius[8] = {0., 0., 0., 0.,
                                  0., 0., 0., 0.}; ///< Outer radius along each of 8 directions (px), 0 if unread.
   unsigned int nbDirections = 0;                  ///< How many of the 8 directions showed the ring pattern.
