@@ -45,7 +45,8 @@ Options:
   --save-images K    Write the first K target views (and the first K negatives) as PNG:
                      view-NNNNN.png (the grey image the detector reads) and
                      view-NNNNN-annotated.png (truth green, detections red), with
-                     images-truth.csv (default 0).
+                     images-truth.csv (default 0); with --apriltag, also the tag rendering
+                     view-NNNNN-apriltag.png.
   --save-misses K    Write the first K views whose eligible B was missed, the same way, as
                      miss-NNNNN*.png (default 0).
   --decimation D     vpSSLDetector::setDecimation (1 or 2, default 1).
@@ -223,6 +224,12 @@ int main(int argc, char **argv)
             positive ? tagCorners(r.params, tagSheet) : std::vector<vpImagePoint>();
         vpSSLCorpusEvaluator::matchTag(polygons, tags.getTagsId(), corners, tagSheet.getTagId(), r.params.camera.width,
                                        r.params.camera.height, r);
+        if (index < o.saveImages) {
+          char stem[64];
+          std::snprintf(stem, sizeof(stem), "/%s-%05u-apriltag.png", positive ? "view" : "negative", index);
+          std::lock_guard<std::mutex> lock(ioMutex);
+          vpImageIo::write(tagView.getImage(), o.outputDir + stem);
+        }
         if (!positive)
           r.tagWholeInFrame = false;
       }
