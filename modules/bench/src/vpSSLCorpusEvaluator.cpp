@@ -275,6 +275,11 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
        [](const vpSSLCorpusViewResult &r, const vpSSLCorpusLandmarkTruth &) { return double(r.params.background); },
        false,
        false},
+      {"white margin beyond the outer ring (radii)",
+       {{"0-0.25", -1, 0.25}, {"0.25-0.5", 0.25, 0.5}, {"0.5-1", 0.5, 1}, {"1+", 1, inf}},
+       [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.sheetMargin; },
+       false,
+       false},
       {"occluded fraction of the outer disc",
        {{"0", -1, 1e-9}, {"0-0.1", 1e-9, 0.1}, {"0.1-0.25", 0.1, 0.25}, {"0.25+", 0.25, inf}},
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.occludedFraction; },
@@ -362,7 +367,8 @@ void vpSSLCorpusEvaluator::writeCsv(std::ostream &os) const
   os << "kind,view,camera,width,height,px,water,visibility_m,background,jpeg_quality,gauss_sigma_px,motion_px,"
         "landmark,true_u,true_v,ellipse_u,ellipse_v,a_px,b_px,theta_rad,whole_in_frame,centre_in_frame,view_angle_deg,"
         "range_m,range_over_visibility,blur_sigma_px,contrast_grey,noise_sigma_grey,contrast_over_noise,"
-        "occluded_fraction,centre_occluded,eligible,found,det_u,det_v,det_radius_px,centre_error_px,radius_rel_error,"
+        "sheet_margin_r,occluded_fraction,centre_occluded,eligible,found,det_u,det_v,det_radius_px,centre_error_px,"
+        "radius_rel_error,"
         "radius_ok,labelled,target_found,target_correct,false_target,false_landmarks,nb_detections,detect_ms,"
         "tag_run,tag_whole_in_frame,tag_found,tag_false\n";
   for (const vpSSLCorpusViewResult &r : m_results) {
@@ -378,7 +384,7 @@ void vpSSLCorpusEvaluator::writeCsv(std::ostream &os) const
                   r.tagFalse);
     if (r.truth.empty()) {
       os << head << "-";
-      for (int k = 0; k < 28; ++k)
+      for (int k = 0; k < 29; ++k)
         os << ",";
       os << tail;
       continue;
@@ -388,12 +394,12 @@ void vpSSLCorpusEvaluator::writeCsv(std::ostream &os) const
       const vpSSLCorpusLandmarkResult &x = r.results[i];
       char row[1024];
       std::snprintf(row, sizeof(row),
-                    "%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f,%d,%d,%.2f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%d,%d,"
+                    "%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f,%d,%d,%.2f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%d,%d,"
                     "%.4f,%.4f,%.4f,%.4f,%.5f,%d,%d,",
                     t.name.c_str(), t.u, t.v, t.ellipseU, t.ellipseV, t.a, t.b, t.theta, t.wholeInFrame,
                     t.centreInFrame, t.viewAngle, t.range, t.rangeOverVisibility, t.blurSigma, t.contrast, t.noiseSigma,
-                    t.contrastOverNoise, t.occludedFraction, t.centreOccluded, t.eligible(), x.found, x.u, x.v,
-                    x.radius, x.centreError, x.radiusError, x.radiusOk, x.labelled);
+                    t.contrastOverNoise, t.sheetMargin, t.occludedFraction, t.centreOccluded, t.eligible(), x.found,
+                    x.u, x.v, x.radius, x.centreError, x.radiusError, x.radiusOk, x.labelled);
       os << head << row << tail;
     }
   }

@@ -281,6 +281,12 @@ std::vector<vpSSLCorpusLandmarkTruth> vpSSLCorpusView::geometry(const vpSSLTarge
     t.viewAngle = std::acos(std::min(1., std::fabs(ray[2]) / t.range)) * 180. / kPi;
     t.rangeOverVisibility = t.range / p.visibility;
     t.blurSigma = std::sqrt(p.gaussSigma * p.gaussSigma + p.motionLength * p.motionLength / 12.);
+    // The kept sheet: the crop inside the target's sheet rectangle (what render() keeps for an SSL sheet).
+    const double sl = target.getSheetCenterX() - 0.5 * target.getSheetWidth();
+    const double st = target.getSheetCenterY() - 0.5 * target.getSheetHeight();
+    const double left = std::max(p.cropLeft, sl), right = std::min(p.cropRight, sl + target.getSheetWidth());
+    const double top = std::max(p.cropTop, st), bottom = std::min(p.cropBottom, st + target.getSheetHeight());
+    t.sheetMargin = (std::min(std::min(l.x - left, right - l.x), std::min(l.y - top, bottom - l.y)) - R) / R;
     out.push_back(t);
   }
   return out;

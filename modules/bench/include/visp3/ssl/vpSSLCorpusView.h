@@ -152,6 +152,7 @@ struct vpSSLCorpusLandmarkTruth
   double contrast = 0.;          ///< Grey difference between paper and ink at the landmark, after water and camera.
   double noiseSigma = 0.;        ///< Total grey noise sigma at the landmark's mid-level (shot, read, quantisation).
   double contrastOverNoise = 0.; ///< contrast / noiseSigma.
+  double sheetMargin = 0.;       ///< White paper between the outer ring and the kept sheet's nearest edge, in radii.
   double occludedFraction = 0.;  ///< Fraction of the outer disc's in-frame pixels covered by occluders.
   bool centreOccluded = false;   ///< An occluder covers the centre pixel (never drawn so; checked).
   //! Headline eligibility: whole in frame, radius >= 8 px, centre not occluded, contrast >= 3x noise.
