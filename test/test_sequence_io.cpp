@@ -1,4 +1,4 @@
-// Recorded-sequence I/O (../shared/spec/sequence-format.md): what the writer writes the reader gives back, and
+// Recorded-sequence I/O (doc/sequence-format.md): what the writer writes the reader gives back, and
 // every malformed input fails with one message naming the file, the line and the field.
 #include <gtest/gtest.h>
 

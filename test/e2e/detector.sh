@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end check of tutorial-ssl-detector: --help, the JSON Lines contract (../shared/spec/detect-json.md),
+# End-to-end check of tutorial-ssl-detector: --help, the JSON Lines contract (doc/detection-json.md),
 # annotated output, and one-line errors with the documented exit codes.
 # Usage: detector.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
 set -u
@@ -76,7 +76,7 @@ PY
 python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["cMo"] is None and t["range_m"] is None' \
   "$work/one.json" || fail "no camera: cMo and range_m must be null"
 
-# A file with no landmark: target not found, exactly as the spec writes it.
+# A file with no landmark: target not found, exactly as doc/detection-json.md writes it.
 python3 -c 'import sys; open(sys.argv[1],"wb").write(b"P5\n64 48\n255\n" + bytes([128]*64*48))' "$work/grey.pgm"
 "$bin" --input "$work/grey.pgm" --json > "$work/grey.json" 2>/dev/null || fail "grey image exit code"
 grep -q '"target": {"found": false, "n_landmarks": 0}' "$work/grey.json" || fail "not-found record: $(cat "$work/grey.json")"

@@ -93,7 +93,7 @@ for y in range(h):
             line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
     rows.append(line); prev = line
 k = dpi / 0.0254
-x0, y0 = -0.051 - 0.21, -0.1485          # ssl3-a3 sheet corner in the target frame (spec)
+x0, y0 = -0.051 - 0.21, -0.1485          # ssl3-a3 sheet corner in the target frame (doc/target-ssl3-a3.md)
 def grey(X, Y):
     u, v = int(math.floor((X - x0) * k)), int(math.floor((Y - y0) * k))
     return rows[v][u * bpp]
