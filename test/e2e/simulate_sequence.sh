@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End-to-end check of tutorial-ssl-simulate-sequence: help text, one-line errors, byte-identical output for a
-# seed, the sequence format (the shared checker when present), AprilTag and wide-camera sequences, and frames
+# seed, the sequence format (tutorial-ssl-check-sequence), AprilTag and wide-camera sequences, and frames
 # without ground truth while the target is out of view.
 # Usage: bash simulate_sequence.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
 set -u
@@ -20,16 +20,11 @@ pass() { echo "ok: $*"; }
 
 [ -x "$BIN" ] || { echo "FAIL: no executable $BIN" >&2; exit 1; }
 
-# The shared sequence-format checker, where this machine has it.
-CHECKER=""
-for c in "${VISP_SSL_CHECK_SEQUENCE:-}" "$DATA/../scripts/check-sequence" "$DATA/../../shared/tools/check-sequence" \
-  /work/shared/tools/check-sequence; do
-  if [ -n "$c" ] && [ -f "$c" ]; then CHECKER="$c"; break; fi
-done
+# The project's sequence checker (doc/sequence-format.md); it must be there, as the simulator is.
+CHECKER="$1/tutorial-ssl-check-sequence"
+[ -x "$CHECKER" ] || { echo "FAIL: no executable $CHECKER" >&2; exit 1; }
 check_format() {
-  if [ -z "$CHECKER" ]; then
-    echo "skip: check-sequence not found (set VISP_SSL_CHECK_SEQUENCE)"
-  elif python3 "$CHECKER" "$1" >check.out 2>&1; then
+  if "$CHECKER" "$1" >check.out 2>&1; then
     pass "check-sequence $1: $(cat check.out)"
   else
     fail "check-sequence $1: $(cat check.out)"
