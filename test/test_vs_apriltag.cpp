@@ -1,4 +1,4 @@
-// Tests of the SSL vs AprilTag benchmark (issue 6): the AprilTag baseline's pose error on ViSP's own AprilTag
+// Tests of the SSL vs AprilTag benchmark: the AprilTag baseline's pose error on ViSP's own AprilTag
 // benchmark images, and the arithmetic of the report (range bands, rates, range90, percentiles, pose errors).
 #include <cmath>
 #include <string>

@@ -1,5 +1,5 @@
 //! \example tutorial-ssl-vs-apriltag.cpp
-//! Benchmarks the SSL tracker against the AprilTag baseline on recorded sequences (issue 6).
+//! Benchmarks the SSL tracker against the AprilTag baseline on recorded sequences.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
