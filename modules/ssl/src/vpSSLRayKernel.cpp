@@ -12,9 +12,9 @@
     the plain scalar version as its reference);
   - score(): the radii that pass, each lane reading every ring of its radius and the tests on the whole reading,
     lanes that finish at different rings held under masks.
-  The arithmetic is that of the scalar reference, operation for operation, in doubles (the profile's differences in floats,
-  as there); this file is compiled with -ffp-contract=off so that no multiply-add is fused: the results are those
-  of the scalar reference bit for bit on every target.
+  The arithmetic is that of the scalar reference, operation for operation, in doubles (the profile's differences in
+  floats, as there); this file is compiled with -ffp-contract=off so that no multiply-add is fused: the results are
+  those of the scalar reference bit for bit on every target.
 */
 #undef HWY_TARGET_INCLUDE
 // foreach_target.h re-includes this file once per target; the path is relative to modules/ssl/include.
