@@ -3,25 +3,10 @@
 # seed, the sequence format (tutorial-ssl-check-sequence), AprilTag and wide-camera sequences, and frames
 # without ground truth while the target is out of view.
 # Usage: bash simulate_sequence.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
-set -u
-
-BIN="$1/tutorial-ssl-simulate-sequence"
-DATA="$2"
-WORK=$(mktemp -d "$PWD/simulate_sequence.XXXXXX")
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
-
-FAILS=0
-fail() {
-  echo "FAIL: $*" >&2
-  FAILS=$((FAILS + 1))
-}
-pass() { echo "ok: $*"; }
-
-[ -x "$BIN" ] || { echo "FAIL: no executable $BIN" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-simulate-sequence "$@"
 
 # The project's sequence checker (doc/sequence-format.md); it must be there, as the simulator is.
-CHECKER="$1/tutorial-ssl-check-sequence"
+CHECKER="$BIN_DIR/tutorial-ssl-check-sequence"
 [ -x "$CHECKER" ] || { echo "FAIL: no executable $CHECKER" >&2; exit 1; }
 check_format() {
   if "$CHECKER" "$1" >check.out 2>&1; then
@@ -127,8 +112,4 @@ fi
 "$BIN" --frames 1 --supersampling 1 --camera "$DATA/camera/camera-640x480.xml" --output cam --colour >/dev/null 2>&1 ||
   fail "data/camera/camera-640x480.xml is not accepted"
 
-if [ "$FAILS" -ne 0 ]; then
-  echo "$FAILS check(s) failed" >&2
-  exit 1
-fi
-echo "all checks passed"
+e2e_finish
