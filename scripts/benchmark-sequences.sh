@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Generates the SSL vs AprilTag benchmark sequences (issue 6) and runs tutorial-ssl-vs-apriltag on them.
+# Generates the SSL vs AprilTag benchmark sequences and runs tutorial-ssl-vs-apriltag on them.
 #
 # Usage: scripts/benchmark-sequences.sh [OUT_DIR] [FRAMES]
 #   OUT_DIR  where the sequences and the report go (default out/benchmark-sequences); nothing is committed.

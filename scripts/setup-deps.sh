@@ -22,8 +22,9 @@ packages=(
   libhwy-dev libcairo2-dev libeigen3-dev
   # Tests and benchmarks; visp-images-data holds the real photographs the false-positive tests use.
   libgtest-dev libbenchmark-dev visp-images-data
-  # Formatting check, and python3 for the sequence-format checker.
-  clang-format python3
+  # Formatting check, python3 for the end-to-end scripts' JSON and CSV checks, doxygen for the API reference
+  # (Doxyfile; built and checked for warnings by scripts/test.sh).
+  clang-format python3 doxygen
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quick start, part 2: installs the Debian packages, builds everything in Release (build/) and runs every test
-# with ctest; installs into install/ and builds the downstream example (example/consumer) against it; then
+# with ctest; builds the API reference (doxygen); installs into install/ and builds the downstream example
+# (example/consumer) against it; then
 # builds again with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/) and runs the tests there;
 # last, checks that the C++ files are formatted (scripts/format.sh --check).
 # Usage: scripts/test.sh [--no-sanitize]
@@ -38,6 +39,9 @@ run_logged build/build.log cmake --build build -j"$JOBS"
 
 phase "ctest, Release"
 ctest --test-dir build --output-on-failure --no-tests=error -j"$JOBS"
+
+phase "API reference (doxygen, a warning fails)"
+run_logged build/build.log cmake --build build --target doc
 
 phase "install into install/ and build example/consumer against it"
 rm -rf install build-consumer

@@ -2,6 +2,7 @@
 // apparent radius is read, whatever its scale, in-plane rotation, tilt, blur, contrast, noise and partial
 // occlusion; nothing else is taken for one.
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -178,8 +179,9 @@ TEST(Detector, RangeFromApparentRadius)
 TEST(Detector, RadiusSweepPeaksAtTheApparentSizeOnTheSheet)
 {
   // Fig. 4: the Eq. 7 sweep peaks at the apparent size; the white paper around the outer black ring
-  // extends the pattern by one ring, so on a sheet it peaks between R and R / sqrt(p) (Fig. 5 notes
-  // the overestimate).
+  // extends the pattern by one ring, so on a sheet it peaks at R / sqrt(p) = 1.41 R (Fig. 5 notes the
+  // overestimate). doc/detector.md: never above R / sqrt(p) and at most 2 px below it, the sweep's windows
+  // being whole pixels (measured 34, 70, 112 px for R = 25, 50, 80).
   vpSSLDetector detector(sslt::singleLandmarkTarget(kLandmarkRadius));
   detector.setRadiusSweep(true);
   for (double r : {25., 50., 80.}) {
@@ -187,8 +189,9 @@ TEST(Detector, RadiusSweepPeaksAtTheApparentSizeOnTheSheet)
     detector.detect(view.I);
     ASSERT_EQ(detector.getLandmarks().size(), 1u);
     const double eq7 = detector.getLandmarks().front().radiusEq7;
-    EXPECT_GE(eq7, 0.95 * r) << "r=" << r;
-    EXPECT_LE(eq7, 1.05 * std::sqrt(2.) * r) << "r=" << r;
+    std::printf("R %.0f px: Eq. 7 peak %.2f px, %.3f R\n", r, eq7, eq7 / r);
+    EXPECT_LE(eq7, r * std::sqrt(2.) + 1e-9) << "r=" << r;
+    EXPECT_GE(eq7, r * std::sqrt(2.) - 2.) << "r=" << r;
   }
   // Off by default: nothing is swept.
   vpSSLDetector plain(sslt::singleLandmarkTarget(kLandmarkRadius));

@@ -1,5 +1,5 @@
 /*
-  Decimated matching pass and tracked re-reading (issue 4): matching on the image decimated twice with a smaller
+  Decimated matching pass and tracked re-reading: matching on the image decimated twice with a smaller
   window, then reading the rings at full resolution, finds the same landmarks as the full-resolution pass; and in
   tracking mode a landmark re-read around its previous ellipse keeps its full-resolution accuracy.
 */

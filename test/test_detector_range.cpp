@@ -63,8 +63,8 @@ int checkSequence(const RangeCase &rc)
 
 TEST(DetectorRange, DefaultModeReadsLandmarksAgainstWaterFrom16Pixels)
 {
-  // Frame 8 (3.1 m, B 18 px, B near the sheet's edge against darker water) was lost before: its rays
-  // pointing at the water read one level too many.
+  // Frame 8 (3.1 m, B 18 px, B near the sheet's edge against darker water) is the hard one: its rays pointing at
+  // the water must not read one level too many.
   // B only: S1 and S2 at 20 px next to B are not read in the default mode (doc/detector.md).
   EXPECT_GE(checkSequence({false, 16., 1}), 2);
 }

@@ -1,5 +1,5 @@
 /*
-  Tracking mode of the detector (paper Sec. 4.1, issue 4): matching only in regions of interest around the
+  Tracking mode of the detector (paper Sec. 4.1): matching only in regions of interest around the
   predicted landmarks gives the same landmarks as the full frame, a full-image search still runs every n-th
   frame (default 10, as in the paper) so that a landmark outside the regions is found again, and detect()
   itself allocates nothing on the heap once its buffers have grown (only the target identifier's result,

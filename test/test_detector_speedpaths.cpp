@@ -1,5 +1,5 @@
 /*
-  The fast paths of vpSSLDetector (issue 4, fourth round) give the readings of the plain ones:
+  The fast paths of vpSSLDetector give the readings of the plain ones:
   - the symmetry centring's SIMD kernel (vpSSLSymmetryKernel: every centre of the search in one pass) gives the
     same landmarks, bit for bit, on every SIMD target compiled in, for the full-resolution, decimated and
     small-landmark modes, full frames and tracking frames;

@@ -1,5 +1,5 @@
 /*
-  The fast matching function (SIMD with run-time dispatch, threads, regions of interest; issue 4) gives exactly
+  The fast matching function (SIMD with run-time dispatch, threads, regions of interest) gives exactly
   the map of computeReference() (paper Eq. 3 and 5): on noise, sparse binary and ring images, at every window
   length, at the borders and odd widths, for any thread count, on every SIMD target compiled in, and inside
   the regions of interest (0 outside them).

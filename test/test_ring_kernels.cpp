@@ -1,13 +1,14 @@
 /*
-  The SIMD kernels of the ring reading and of the peak search give the results of the plain scalar code they
-  replaced (below), bit for bit, on every SIMD target compiled in:
+  The SIMD kernels of the ring reading and of the peak search give the results of a plain scalar
+  reference (below), bit for bit, on every SIMD target compiled in:
   - vpSSLRayKernel::sample(): the bilinear samples of a ray, out to the image's last row and column and its very
     last pixel (where a gathered word would end past the image), on noise, a rendered target and a photograph;
-  - vpSSLRayKernel::screen(): the radii of a grid at which rayScore() goes on past its first two ring pairs, on
+  - vpSSLRayKernel::screen(): the radii of a grid at which the reference ring test goes on past its first two ring
+    pairs, on
     random profiles, the rays of a rendered landmark and of a photograph, including radii too small for three rings
     and profiles whose last sample is reached;
-  - vpSSLRayKernel::score(): of those, the radii that rayScore() and the tests rayCandidates() ran on its result
-    accepted, and their scores;
+  - vpSSLRayKernel::score(): of those, the radii that the reference ring test and the tests rayCandidates() runs on its
+    result accept, and their scores;
   - vpSSLPeakKernel::localMaxima(): the local maxima of a row, ties and plateaus included, with and without the
     neighbouring rows.
 */
@@ -177,7 +178,7 @@ vpImage<unsigned char> photograph()
   return I;
 }
 
-// rayScore()'s integral of the profile from 0 to rho, linear between samples, as it was.
+// The reference ring test's integral of the profile from 0 to rho, linear between samples.
 double referenceIntegral(const std::vector<float> &P, const std::vector<double> &C, double step, double rho)
 {
   const size_t lastC = C.size() - 1, nbP = P.size();
@@ -191,7 +192,7 @@ double referenceIntegral(const std::vector<float> &P, const std::vector<double> 
   return C[i] + f * step * pr;
 }
 
-// rayScore()'s first two ring pairs, as they were, in plain scalar code: whether
+// The reference ring test's first two ring pairs, in plain scalar code: whether
 // the radius R goes on past them.
 bool referenceSurvives(const std::vector<float> &P, const std::vector<double> &C, double step, double q,
                        double minWidth, double minRadius, double R)
@@ -225,7 +226,7 @@ bool referenceSurvives(const std::vector<float> &P, const std::vector<double> &C
   return true;
 }
 
-// rayScore() and the tests rayCandidates() ran on its result, as they were, in plain scalar code (solidRings()
+// The reference ring test and the tests rayCandidates() runs on its result, in plain scalar code (solidRings()
 // aside): whether the radius R passes them, and its score.
 bool referenceScore(const std::vector<float> &P, const std::vector<double> &C, double step, double q, double minWidth,
                     double minRadius, double clearWidth, double R, double &score)

@@ -1,4 +1,4 @@
-// Recorded-sequence I/O (../shared/spec/sequence-format.md): what the writer writes the reader gives back, and
+// Recorded-sequence I/O (doc/sequence-format.md): what the writer writes the reader gives back, and
 // every malformed input fails with one message naming the file, the line and the field.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -276,33 +277,183 @@ TEST_F(SequenceIo, unknownExtraColumnsAreKeptByNameAndOtherwiseIgnored)
   EXPECT_FALSE(reader.next(f, I));
 }
 
-TEST_F(SequenceIo, writtenSequencePassesTheSharedChecker)
+// ---------------------------------------------------------------- the checker (tutorial-ssl-check-sequence)
+
+// Runs the project's checker with \e args; returns its exit status and its standard output in \e out.
+int runChecker(const std::string &args, std::string &out)
 {
-  const char *env = std::getenv("VISP_SSL_CHECK_SEQUENCE");
-  // The project's shared/ sits beside the clone (CI and developers alike).
-  std::vector<fs::path> candidates = {fs::path(VISP_SSL_DATA_DIR) / ".." / "scripts" / "check-sequence",
-                                      fs::path(VISP_SSL_DATA_DIR) / ".." / ".." / "shared" / "tools" / "check-sequence",
-                                      "/work/shared/tools/check-sequence"};
-  if (env)
-    candidates.insert(candidates.begin(), env);
-  fs::path checker;
-  for (const fs::path &c : candidates)
-    if (checker.empty() && fs::is_regular_file(c))
-      checker = c;
-  if (checker.empty())
-    GTEST_SKIP() << "check-sequence not found (set VISP_SSL_CHECK_SEQUENCE)";
-  if (std::system("python3 --version > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "python3 not available";
-  writeGreySequence(dir());
-  std::string out = (m_dir.parent_path() / (m_dir.filename().string() + ".check")).string();
-  std::string cmd = "python3 '" + checker.string() + "' '" + dir() + "' > '" + out + "' 2>&1";
-  int status = std::system(cmd.c_str());
-  std::ifstream in(out);
+  const fs::path file = fs::path(VISP_SSL_BINARY_DIR) / "test-tmp" / ("checker-" + std::to_string(::getpid()) + ".out");
+  const std::string cmd = std::string("'") + VISP_SSL_CHECK_SEQUENCE + "' " + args + " > '" + file.string() + "' 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
-  fs::remove(out);
-  EXPECT_EQ(status, 0) << text.str();
-  EXPECT_CONTAINS(text.str(), "ok: 20 frames, 15 with ground truth");
+  out = text.str();
+  fs::remove(file);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string quoted(const std::string &s)
+{
+  return "'" + s + "'";
+}
+
+// Every line of a failing run is one problem, FILE:LINE: FIELD: problem.
+void expectOneProblemPerLine(const std::string &out)
+{
+  std::istringstream in(out);
+  std::string line;
+  size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    const size_t a = line.find(':'), b = line.find(": ", a + 1), c = line.find(": ", b + 2);
+    ASSERT_NE(a, std::string::npos) << line;
+    ASSERT_NE(b, std::string::npos) << line;
+    ASSERT_NE(c, std::string::npos) << line;
+    const std::string number = line.substr(a + 1, b - a - 1);
+    EXPECT_TRUE(!number.empty() && number.find_first_not_of("0123456789") == std::string::npos) << line;
+    EXPECT_GT(c, b + 2) << "empty FIELD: " << line;
+    EXPECT_GT(line.size(), c + 2) << "empty problem: " << line;
+  }
+  EXPECT_GT(n, 0u);
+}
+
+TEST_F(SequenceIo, checkerAcceptsEveryShippedSequence)
+{
+  size_t n = 0;
+  for (const auto &entry : fs::directory_iterator(fs::path(VISP_SSL_DATA_DIR) / "sequences")) {
+    if (!entry.is_directory())
+      continue;
+    ++n;
+    std::string out;
+    EXPECT_EQ(runChecker(quoted(entry.path().string()), out), 0) << out;
+    EXPECT_CONTAINS(out, entry.path().string() + ": ok: ");
+    EXPECT_EQ(readError(entry.path().string()), "");
+  }
+  EXPECT_GE(n, 5u) << "data/sequences/ has lost its sample sequences";
+}
+
+TEST_F(SequenceIo, checkerAcceptsWhatTheWriterWrites)
+{
+  writeGreySequence(dir());
+  std::string out;
+  EXPECT_EQ(runChecker(quoted(dir()), out), 0) << out;
+  EXPECT_EQ(out, dir() + ": ok: 20 frames, 15 with ground truth, 13 with odometry, target ssl3-a3\n");
+  EXPECT_EQ(runChecker("--quiet --no-images " + quoted(dir()), out), 0) << out;
+  EXPECT_EQ(out, "");
+
+  // An interrupted recording (an image written, its row not) is valid up to its last row.
+  vpImageIo::write(greyImage(20), (m_dir / "images" / "000020.png").string());
+  EXPECT_EQ(runChecker(quoted(dir()), out), 0) << out;
+}
+
+TEST_F(SequenceIo, checkerUsageErrorsExitWith2)
+{
+  std::string out;
+  EXPECT_EQ(runChecker("", out), 2) << out;
+  EXPECT_EQ(runChecker("--bogus " + quoted(dir()), out), 2) << out;
+  EXPECT_EQ(runChecker("--help", out), 0) << out;
+  EXPECT_CONTAINS(out, "FILE:LINE: FIELD: problem");
+  EXPECT_CONTAINS(out, "Exit status: 0");
+}
+
+// Broken folders, each with one known problem: the checker exits with 1 and names it on its line, and the
+// reader rejects the folder too.
+TEST_F(SequenceIo, checkerRejectsEachBrokenFolderWithOneLinePerProblem)
+{
+  struct Broken
+  {
+    std::string name;
+    std::string expected; // the problem line, after "FOLDER/"
+  };
+  const std::vector<Broken> cases = {
+      {"missing-image", "frames.csv:9: image: images/000007.png: missing"},
+      {"time-not-increasing", "frames.csv:9: t: not increasing (101.2 after 101.300000)"},
+      {"bad-header", "frames.csv:1: column 5: expected \"odom_tz\", got \"odom_z\""},
+      {"bad-camera", "camera.xml:0: camera: name: no camera named \"Camera\""},
+      {"camera-without-model", "camera.xml:0: camera: camera \"Camera\": no readable <model>"},
+      {"partial-pose", "frames.csv:8: gt_tuz: empty, but 5 other gt_* cells are set"},
+      {"frame-out-of-order", "frames.csv:6: frame: 5, expected 4"},
+      {"short-row", "frames.csv:5: row: 10 cells, the header has 15"},
+      {"not-a-number", "frames.csv:17: gt_tz: not a number: \"abc\""},
+      {"no-frames-csv", "frames.csv:0: file: missing"},
+      {"bad-json", "sequence.json:4: json: expected '}' or ','"},
+      {"unknown-target", "sequence.json:2: target: \"no-such-target.txt\" is neither"},
+      {"image-of-another-size", "frames.csv:6: image: images/000004.png: 3x3 pixels, expected 8x6"},
+  };
+  for (const Broken &b : cases) {
+    SCOPED_TRACE(b.name);
+    const fs::path folder = m_dir / b.name;
+    writeGreySequence(folder.string());
+    const fs::path csv = folder / "frames.csv";
+    if (b.name == "missing-image")
+      fs::remove(folder / "images" / "000007.png");
+    else if (b.name == "time-not-increasing") {
+      replaceLine(csv, 8, "6,101.3,,,,,,,,,,,,,");
+      replaceLine(csv, 9, "7,101.2,,,,,,,,,,,,,");
+    } else if (b.name == "bad-header")
+      replaceLine(
+          csv, 1,
+          "frame,t,odom_tx,odom_ty,odom_z,odom_tux,odom_tuy,odom_tuz,gt_tx,gt_ty,gt_tz,gt_tux,gt_tuy,gt_tuz,depth");
+    else if (b.name == "bad-camera") {
+      fs::remove(folder / "camera.xml");
+      vpXmlParserCamera().save(camera(), (folder / "camera.xml").string(), "Other", 8, 6);
+    } else if (b.name == "camera-without-model")
+      writeText(folder / "camera.xml", "<?xml version=\"1.0\"?>\n<root><camera><name>Camera</name></camera></root>\n");
+    else if (b.name == "partial-pose")
+      replaceLine(csv, 8, "6,100.240000,,,,,,,1,2,3,0,0,,");
+    else if (b.name == "frame-out-of-order")
+      replaceLine(csv, 6, "5,100.160000,,,,,,,,,,,,,");
+    else if (b.name == "short-row")
+      replaceLine(csv, 5, "3,100.120000,1,2,3,0.1,0.2,0.3,1,2");
+    else if (b.name == "not-a-number")
+      replaceLine(csv, 17, "15,100.600000,1,2,3,0.1,0.2,0.3,1,2,abc,0,0,0,");
+    else if (b.name == "no-frames-csv")
+      fs::remove(csv);
+    else if (b.name == "bad-json")
+      writeText(folder / "sequence.json", "{\n  \"target\": \"ssl3-a3\",\n  \"camera_to_vehicle\": [0, 0, 0, 0, 0, 0]\n"
+                                          "  \"source\": \"recorded\"\n}\n");
+    else if (b.name == "unknown-target")
+      writeText(folder / "sequence.json",
+                "{\n  \"target\": \"no-such-target.txt\",\n"
+                "  \"camera_to_vehicle\": [0, 0, 0, 0, 0, 0],\n  \"source\": \"recorded\"\n}\n");
+    else if (b.name == "image-of-another-size")
+      vpImageIo::write(vpImage<unsigned char>(3, 3, 0), (folder / "images" / "000004.png").string());
+
+    std::string out;
+    EXPECT_EQ(runChecker(quoted(folder.string()), out), 1) << out;
+    EXPECT_CONTAINS(out, folder.string() + "/" + b.expected);
+    expectOneProblemPerLine(out);
+    if (b.name != "unknown-target") // the reader does not interpret "target"; the programs that build it do
+      EXPECT_NE(readError(folder.string()), "") << "the reader reads a folder the checker rejects";
+  }
+}
+
+TEST_F(SequenceIo, checkerListsEveryProblemOfAFolder)
+{
+  writeGreySequence(dir());
+  const fs::path csv = m_dir / "frames.csv";
+  replaceLine(csv, 4, "2,100.080000,1,,3,0,0,0,,,,,,,"); // partial odometry
+  replaceLine(csv, 9, "7,100.100000,,,,,,,,,,,,,");      // time stamp going back
+  replaceLine(csv, 10, "8,100.320000,,,,,,,,,,,,,");     // compared with 100.24, the last good one: fine
+  fs::remove(m_dir / "images" / "000012.png");
+  fs::remove(m_dir / "images" / "000015.png");
+  std::string out;
+  ASSERT_EQ(runChecker("--no-images " + quoted(dir()), out), 1) << out;
+  const std::string f = dir() + "/frames.csv:";
+  EXPECT_EQ(out,
+            f + "4: odom_ty: empty, but 5 other odom_* cells are set (the 6 cells are all numbers or all empty)\n" + f +
+                "9: t: not increasing (100.100000 after 100.240000)\n" + f +
+                "14: image: images/000012.png: missing (also looked for .jpg, .jpeg, .pgm, .ppm)\n" + f +
+                "17: image: images/000015.png: missing (also looked for .jpg, .jpeg, .pgm, .ppm)\n");
+
+  // Two folders: the status is 1 when one of them does not conform, and each is reported.
+  const fs::path good = m_dir.string() + "-good";
+  writeGreySequence(good.string(), 3);
+  EXPECT_EQ(runChecker(quoted(good.string()) + " " + quoted(dir()), out), 1) << out;
+  EXPECT_CONTAINS(out, good.string() + ": ok: 3 frames");
+  EXPECT_CONTAINS(out, f + "9: t: not increasing");
+  fs::remove_all(good);
 }
 
 TEST_F(SequenceIo, writerRefusesANonEmptyFolderUnlessToldAndThenKeepsForeignFiles)

@@ -277,9 +277,9 @@ TEST(ServoLaw, CentringPrefersHeavyAxesAndKeepsTheImageVelocity)
 
 TEST(ServoLaw, DockingStartGivesSurgeNotAHeavePitchBurst)
 {
-  // The start of fig9's DOCK: target centred at the 2 m stand-off, stand-off now 0. The consistent command is
-  // forward; before the pseudo-inverse threshold the near-singular heave-pitch direction took the saturated
-  // command (heave 0.3 m/s, surge 0.015 m/s) and the vehicle dived under the board.
+  // The start of fig9's DOCK: target centred at the 2 m stand-off, stand-off set to 0. The consistent command is
+  // forward; without the pseudo-inverse threshold the near-singular heave-pitch direction takes the saturated
+  // command (heave 0.3 m/s, surge 0.015 m/s) and the vehicle dives under the board.
   const std::vector<vpPoint> points = vpSSLTarget::ssl3a3().getPoints();
   for (double dy : {-0.003, 0., 0.004}) {
     const vpSSLServoInput in = vpSSLServoInput::fromPose(points, startPose({0.001, dy, 2.0, 0.3, -0.2, 0.}));

@@ -1,6 +1,6 @@
 /*
   The symmetry centring of a candidate (vpSSLSymmetryKernel::centre(), the SIMD search over every centre of the
-  window at once) gives the outputs of the plain scalar search it replaced (below), bit for bit: the centre (u, v),
+  window at once) gives the outputs of a plain scalar search (below), bit for bit: the centre (u, v),
   the asymmetry and the return value, ties included (the first minimum in row-major order), on every SIMD target
   compiled in, for the discs of the full-resolution (radius 8) and small-landmark (16) modes and a few others, on
   noise, on images made of ties, on a rendered target and on a real photograph, up to the image border.
@@ -37,7 +37,7 @@ bool sameBits(double a, double b)
   return std::memcmp(&a, &b, sizeof(double)) == 0;
 }
 
-// The search as it was (vpSSLRadiusEstimator::symmetryCentre() before the SIMD kernel), in plain scalar code: the
+// The reference search of vpSSLRadiusEstimator::symmetryCentre(), in plain scalar code: the
 // energy of every centre in 64 bits over the half disc found by testing every pixel, the peak's own centre first
 // and then the others, a later one winning only if lower or equal and earlier in row-major order; the disc's
 // variance in doubles.

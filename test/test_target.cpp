@@ -1,6 +1,6 @@
 /*
   The printed pattern (paper Eq. 1 and 4) and the target model: the built-in ssl3-a3 matches its
-  spec (target-ssl3-a3.md), target files read back what was written, and every bad file is rejected
+  table of doc/target-ssl3-a3.md, target files read back what was written, and every bad file is rejected
   with a message naming file, line and field.
 */
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <visp3/ssl/vpSSLTarget.h>
 
 namespace {
-const double kSpecTol = 1e-6; // the spec gives the geometry to the micrometre
+const double kSpecTol = 1e-6; // doc/target-ssl3-a3.md gives the geometry to the micrometre
 
 std::string dataFile(const std::string &name)
 {
@@ -158,7 +158,7 @@ TEST(SquareWave, OutsideAndCentreAndBadInput)
   EXPECT_THROW(vpSSLPattern::linear(0.1, -1., 0.5), vpException);
 }
 
-// ---------------------------------------------------------------- ssl3-a3 (spec table)
+// ---------------------------------------------------------------- ssl3-a3 (doc/target-ssl3-a3.md)
 
 TEST(Ssl3A3, MatchesSpecTable)
 {

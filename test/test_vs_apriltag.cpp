@@ -1,4 +1,4 @@
-// Tests of the SSL vs AprilTag benchmark (issue 6): the AprilTag baseline's pose error on ViSP's own AprilTag
+// Tests of the SSL vs AprilTag benchmark: the AprilTag baseline's pose error on ViSP's own AprilTag
 // benchmark images, and the arithmetic of the report (range bands, rates, range90, percentiles, pose errors).
 #include <cmath>
 #include <string>
@@ -111,6 +111,40 @@ TEST(BenchmarkArithmetic, RatesPerBandAndFalseDetections)
   EXPECT_TRUE(std::isnan(s.bandRate(2)));
   EXPECT_DOUBLE_EQ(s.bandRate(3), 2. / 3.);
   EXPECT_TRUE(std::isnan(s.bandRate(4)));
+}
+
+// A position-only pose (the SSL tracker on one landmark) has a placeholder rotation: its angle error would be
+// whatever that placeholder is. Such frames count as detected and in the position error, apart in
+// nbPositionOnly, and never in the angle statistics, even when the caller filled angleError.
+TEST(BenchmarkArithmetic, PositionOnlyFramesAreLeftOutOfTheAngleStatistics)
+{
+  sslbench::Stats s, t;
+  const double angles[3] = {1., 2., 3.};
+  for (double a : angles) {
+    sslbench::FrameResult f = frame(2., true);
+    f.positionError = 0.01;
+    f.angleError = a;
+    s.add(f);
+  }
+  for (int i = 0; i < 4; ++i) {
+    sslbench::FrameResult f = frame(6., true);
+    f.orientationKnown = false;
+    f.positionError = 0.05;
+    f.angleError = 90.; // what a placeholder rotation gives: must not reach the median
+    s.add(f);
+  }
+  sslbench::FrameResult missed = frame(7., false);
+  missed.orientationKnown = false; // not detected: not a position-only pose either
+  s.add(missed);
+  EXPECT_EQ(s.nbDetected, 7u);
+  EXPECT_EQ(s.nbPositionOnly, 4u);
+  EXPECT_DOUBLE_EQ(sslbench::percentile(s.angle, 50.), 2.);
+  EXPECT_DOUBLE_EQ(sslbench::percentile(s.angle, 100.), 3.);
+  EXPECT_DOUBLE_EQ(sslbench::percentile(s.position, 50.), 0.05); // positions of all 7 detected frames count
+  t.merge(s);
+  t.merge(s);
+  EXPECT_EQ(t.nbPositionOnly, 8u);
+  EXPECT_DOUBLE_EQ(sslbench::percentile(t.angle, 100.), 3.);
 }
 
 TEST(BenchmarkArithmetic, Range90IsTheFarthestBinDetectedNineTimesInTen)

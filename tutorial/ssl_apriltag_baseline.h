@@ -177,7 +177,10 @@ struct FrameResult
   bool falseDetection = false; //!< A detection where there is no target (or of another tag id).
   double centreError = kNaN;   //!< px
   double positionError = kNaN; //!< m
-  double angleError = kNaN;    //!< deg
+  double angleError = kNaN;    //!< deg; NaN when the orientation is not estimated (see orientationKnown)
+  //! Whether the pose's orientation is estimated. False for a position-only pose (the SSL tracker after one
+  //! landmark alone): its rotation is a placeholder, so its angle error is left out of the statistics.
+  bool orientationKnown = true;
   double timeMs = kNaN;
 };
 
@@ -189,8 +192,9 @@ struct Stats
   size_t nbDetected = 0;   //!< Of those, frames where the method found it.
   size_t nbUnknown = 0;    //!< Frames where presence is unknown (recordings without truth).
   size_t nbUnknownDetected = 0;
-  size_t nbNoTarget = 0; //!< Frames known to show no target.
-  size_t nbFalse = 0;    //!< False detections (on any frame).
+  size_t nbNoTarget = 0;     //!< Frames known to show no target.
+  size_t nbFalse = 0;        //!< False detections (on any frame).
+  size_t nbPositionOnly = 0; //!< Detected frames with the target whose pose is position-only (no angle error).
   std::vector<size_t> bandFrames, bandDetected;
   std::vector<double> range, centre, position, angle, time; // per frame with target, for medians
   std::vector<double> detectedRange;                        // range of every frame with target (detected or not)
@@ -217,6 +221,8 @@ struct Stats
     ++nbWithTarget;
     if (f.detected)
       ++nbDetected;
+    if (f.detected && !f.orientationKnown)
+      ++nbPositionOnly;
     const int b = bandIndex(f.range);
     if (b >= 0) {
       ++bandFrames[b];
@@ -227,7 +233,7 @@ struct Stats
     detectedFlag.push_back(f.detected ? 1 : 0);
     centre.push_back(f.centreError);
     position.push_back(f.positionError);
-    angle.push_back(f.angleError);
+    angle.push_back(f.orientationKnown ? f.angleError : kNaN); // percentile() skips NaN
     range.push_back(f.range);
   }
 
@@ -325,6 +331,7 @@ struct Stats
     nbUnknownDetected += o.nbUnknownDetected;
     nbNoTarget += o.nbNoTarget;
     nbFalse += o.nbFalse;
+    nbPositionOnly += o.nbPositionOnly;
     for (size_t b = 0; b < bandFrames.size(); ++b) {
       bandFrames[b] += o.bandFrames[b];
       bandDetected[b] += o.bandDetected[b];

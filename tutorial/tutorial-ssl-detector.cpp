@@ -32,7 +32,7 @@ Options:
   --camera-name NAME  Camera name inside the XML file (default: Camera).
   --target NAME|FILE  Built-in target name or target file (default: ssl3-a3).
   --json              Print one JSON object per image on standard output (JSON Lines,
-                      ../shared/spec/detect-json.md); everything else goes to stderr.
+                      doc/detection-json.md); everything else goes to stderr.
   --output DIR        Write annotated images DIR/<image name>.png (default when no window
                       is shown: ssl-detections). Outlines: B green, S1 cyan, S2 purple,
                       landmarks outside the target orange; red crosses at the centres.
@@ -88,7 +88,7 @@ std::string num(double x, int digits)
   return buf;
 }
 
-// The detect-json.md record of one image.
+// The doc/detection-json.md record of one image.
 std::string toJson(const std::string &name, const vpImage<unsigned char> &I, const vpSSLDetector &detector,
                    const vpSSLPoseEstimator &estimator, const vpCameraParameters *cam)
 {

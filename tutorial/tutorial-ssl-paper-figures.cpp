@@ -1,5 +1,5 @@
 //! \example tutorial-ssl-paper-figures.cpp
-//! Regenerates the paper's Fig. 2, Fig. 4, Fig. 5 and Table 1 as PNG plots and Markdown (issue 6).
+//! Regenerates the paper's Fig. 2, Fig. 4, Fig. 5 and Table 1 as PNG plots and Markdown.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

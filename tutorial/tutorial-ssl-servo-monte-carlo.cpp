@@ -1,4 +1,5 @@
-//! Monte Carlo docking benchmark (issue 7): the closed loop of tutorial-ssl-servo from random start poses, currents
+//! \example tutorial-ssl-servo-monte-carlo.cpp
+//! Monte Carlo docking benchmark: the closed loop of tutorial-ssl-servo from random start poses, currents
 //! and waters, the same draws for every method; docking success rate, stand-off error and time to dock per method
 //! and water as runs.csv and a Markdown summary.
 #include <algorithm>

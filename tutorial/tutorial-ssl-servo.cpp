@@ -1,3 +1,4 @@
+//! \example tutorial-ssl-servo.cpp
 //! Closed-loop homing and docking of the simulated AUV through real rendering and detection (paper Sec. 5):
 //! each control step renders the camera image at the true pose, finds the target (SSL tracker or AprilTag
 //! baseline) and lets vpSSLHomingBehaviour drive vpSSLAuvSimulator. Writes a CSV and the figure's PNG.

@@ -292,7 +292,7 @@ int main(int argc, char **argv)
   unsigned int nbWithTruth = 0;
   try {
     writer.open(output, cam, info, columns);
-    // What produced the sequence, beside the spec's members (readers ignore members they do not know).
+    // What produced the sequence, beside the members of doc/sequence-format.md (readers ignore the others).
     std::string json = info.toJson();
     std::ostringstream sim;
     sim << ",\n  \"simulation\": {\"scenario\": \"" << scenario.getName() << "\", \"frames\": " << nbFrames

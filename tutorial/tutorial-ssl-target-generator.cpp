@@ -1,6 +1,6 @@
 //! \example tutorial-ssl-target-generator.cpp
 //! Writes a printable target: a 1:1 vector PDF and SVG and a PNG of the sheet, with the target's name,
-//! the landmark radii and a 100 mm scale bar in the margin (spec target-ssl3-a3.md, "Printing").
+//! the landmark radii and a 100 mm scale bar in the margin (doc/target-ssl3-a3.md, "Printing").
 //!
 //! Each circular landmark (paper Fig. 1b, Eq. 4) is drawn as exact vector discs, from the outside in,
 //! each disc coloured by vpSSLPattern: the disc of radius R p^(k/2) carries the colour of ring k, so the

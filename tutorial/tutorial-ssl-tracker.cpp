@@ -25,7 +25,7 @@
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-tracker --sequence DIR [options]
 
-Tracks the target of a recorded sequence (../shared/spec/sequence-format.md) with vpSSLTracker:
+Tracks the target of a recorded sequence (doc/sequence-format.md) with vpSSLTracker:
 detector in regions of interest, single-frame pose hypotheses and a particle filter driven by the
 vehicle odometry (paper Sec. 3.3). Uses the sequence's camera.xml, its camera_to_vehicle and, when
 present, its odometry columns. Prints one line per frame and writes a CSV of the estimate beside

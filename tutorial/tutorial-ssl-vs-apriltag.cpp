@@ -1,5 +1,5 @@
 //! \example tutorial-ssl-vs-apriltag.cpp
-//! Benchmarks the SSL tracker against the AprilTag baseline on recorded sequences (issue 6).
+//! Benchmarks the SSL tracker against the AprilTag baseline on recorded sequences.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,7 +36,9 @@ the recorded-sequence format (camera.xml, sequence.json, frames.csv, images/).
 Reports per sequence, per method and per water preset: detection rate, overall and per range band
 (0-1, 1-2, 2-4, 4-8, 8-12 m); range90, the far edge of the farthest 0.5 m range bin in which
 >= 90 % of the frames are detected; median centre error (px) and pose error (position m, angle
-deg) against the ground truth; false detections on frames without the target (simulated
+deg) against the ground truth, the angle over frames with an estimated orientation only:
+frames where the SSL tracker has a position-only pose (one landmark seen) are counted apart,
+"position-only"; false detections on frames without the target (simulated
 sequences: no ground truth means out of view; an AprilTag of another id also counts); time per
 frame (median, 95th percentile, one thread). Two sequences whose sequence.json differ only by the
 target (same views, noise, water) are also reported side by side.
@@ -279,9 +281,12 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
     if (isTag && baseline->getNbOthers() > 0)
       r.falseDetection = true;
 
+    // One landmark alone gives the tracker a position and no orientation: its rotation means nothing.
+    r.orientationKnown = isTag || tracker->getOrientationKnown();
     if (r.detected && f.hasGroundTruth) {
       r.positionError = sslbench::positionError(cMo, truth);
-      r.angleError = sslbench::angleError(cMo, truth);
+      if (r.orientationKnown)
+        r.angleError = sslbench::angleError(cMo, truth);
       if (isTag) {
         double u = 0., v = 0.;
         bool ok = true;
@@ -324,7 +329,8 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
     framesCsv << csvField(res.name) << "," << res.method << "," << f.index << "," << csvNum(r.range) << ","
               << csvField(r.water) << "," << (r.truthKnown ? (r.hasTarget ? "1" : "0") : "") << ","
               << (r.detected ? 1 : 0) << "," << (r.falseDetection ? 1 : 0) << "," << csvNum(r.centreError) << ","
-              << csvNum(r.positionError) << "," << csvNum(r.angleError) << "," << csvNum(r.timeMs) << "\n";
+              << csvNum(r.positionError) << "," << csvNum(r.angleError) << "," << csvNum(r.timeMs) << ","
+              << (r.orientationKnown ? 1 : 0) << "\n";
     progress.step(res.name);
   }
   for (const auto &kv : waters)
@@ -334,9 +340,9 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
 
 const char *kMainHeader =
     "| sequence | method | water | frames | rate | 0-1 m | 1-2 m | 2-4 m | 4-8 m | 8-12 m | range90 (m) "
-    "| centre err (px) | position err (m) | angle err (deg) | false det. / frames w/o target "
+    "| centre err (px) | position err (m) | angle err (deg) | position-only | false det. / frames w/o target "
     "| ms median | ms p95 |\n"
-    "|---|---|---|---:|---|---|---|---|---|---|---:|---:|---:|---:|---|---:|---:|\n";
+    "|---|---|---|---:|---|---|---|---|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
 
 std::string mainRow(const std::string &name, const std::string &method, const std::string &water,
                     const sslbench::Stats &s)
@@ -350,6 +356,7 @@ std::string mainRow(const std::string &name, const std::string &method, const st
     os << " " << rateCell(s.bandDetected[b], s.bandFrames[b]) << " |";
   os << " " << fmt(s.range90(), 1) << " | " << fmt(sslbench::percentile(s.centre, 50.), 2) << " | "
      << fmt(sslbench::percentile(s.position, 50.), 3) << " | " << fmt(sslbench::percentile(s.angle, 50.), 2) << " | "
+     << s.nbPositionOnly << " | "
      << (s.nbNoTarget > 0 || s.nbFalse > 0 ? std::to_string(s.nbFalse) + " / " + std::to_string(s.nbNoTarget) : "-")
      << " | " << fmt(sslbench::percentile(s.time, 50.), 2) << " | " << fmt(sslbench::percentile(s.time, 95.), 2)
      << " |\n";
@@ -366,7 +373,7 @@ void summaryCsvRow(std::ostream &os, const std::string &scope, const std::string
   os << "," << csvNum(s.range90()) << "," << csvNum(sslbench::percentile(s.centre, 50.)) << ","
      << csvNum(sslbench::percentile(s.position, 50.)) << "," << csvNum(sslbench::percentile(s.angle, 50.)) << ","
      << s.nbNoTarget << "," << s.nbFalse << "," << csvNum(sslbench::percentile(s.time, 50.)) << ","
-     << csvNum(sslbench::percentile(s.time, 95.)) << "\n";
+     << csvNum(sslbench::percentile(s.time, 95.)) << "," << s.nbPositionOnly << "\n";
 }
 
 int checkVispBenchmark(const std::string &dir)
@@ -480,7 +487,7 @@ int main(int argc, char **argv)
   if (!framesCsv)
     fail(opt.outputDir + "/frames.csv: cannot write", 1);
   framesCsv << "sequence,method,frame,range_m,water,target_in_view,detected,false_detection,centre_err_px,"
-               "position_err_m,angle_err_deg,time_ms\n";
+               "position_err_m,angle_err_deg,time_ms,orientation_known\n";
 
   Progress progress(total, opt.progress == 1 || (opt.progress == -1 && isatty(STDERR_FILENO)));
   std::vector<SequenceResult> results;
@@ -543,7 +550,7 @@ int main(int argc, char **argv)
   for (size_t b = 0; b + 1 < sslbench::bandEdges().size(); ++b)
     summary << ",frames_" << sslbench::bandLabel(b) << "m,rate_" << sslbench::bandLabel(b) << "m";
   summary << ",range90_m,centre_err_px,position_err_m,angle_err_deg,frames_without_target,false_detections,"
-             "time_median_ms,time_p95_ms\n";
+             "time_median_ms,time_p95_ms,position_only_frames\n";
   for (const SequenceResult &r : results)
     summaryCsvRow(summary, r.name, r.method, r.water, r.stats);
   for (const auto &kv : byMethod)

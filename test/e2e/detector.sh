@@ -1,32 +1,28 @@
 #!/usr/bin/env bash
-# End-to-end check of tutorial-ssl-detector: --help, the JSON Lines contract (../shared/spec/detect-json.md),
+# End-to-end check of tutorial-ssl-detector: --help, the JSON Lines contract (doc/detection-json.md),
 # annotated output, and one-line errors with the documented exit codes.
 # Usage: detector.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
-set -u
-bin="$1/tutorial-ssl-detector"
-data="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+E2E_FAIL_FAST=1
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector "$@"
 
-"$bin" --help > "$work/help" || fail "--help exit code"
+"$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks \
            --threshold --no-normalize --threads --max-frames --help; do
-  grep -q -- "$opt" "$work/help" || fail "--help does not mention $opt"
+  grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
 # Small-landmark mode sees B at 4.8 m (11.5 px) in the recorded clear-water approach, where the default mode cannot.
-"$bin" --input "$data/sequences/approach-clear/images/000006.png" --small-landmarks --json --output "$work/small" \
-  > "$work/small.jsonl" 2> /dev/null || fail "--small-landmarks exit code $?"
+"$BIN" --input "$DATA/sequences/approach-clear/images/000006.png" --small-landmarks --json --output "$WORK/small" \
+  > "$WORK/small.jsonl" 2> /dev/null || fail "--small-landmarks exit code $?"
 python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["found"] and "B" in t["landmarks"], t' \
-  "$work/small.jsonl" || fail "--small-landmarks does not find B at 4.8 m"
+  "$WORK/small.jsonl" || fail "--small-landmarks does not find B at 4.8 m"
 
 # A sequence of the demo images with a camera: one JSON object per image on stdout, nothing else.
-"$bin" --input "$data/images/ssl3-a3-%02d.png" --camera "$data/camera/camera-640x480.xml" --json \
-  --output "$work/out" > "$work/seq.jsonl" 2> "$work/seq.err" || fail "sequence exit code $?"
-[ "$(wc -l < "$work/seq.jsonl")" -eq 4 ] || fail "expected 4 JSON lines, got $(wc -l < "$work/seq.jsonl")"
-for i in 00 01 02 03; do [ -f "$work/out/ssl3-a3-$i.png" ] || fail "annotated image $i missing"; done
-python3 - "$work/seq.jsonl" <<'PY' || fail "JSON contract"
+"$BIN" --input "$DATA/images/ssl3-a3-%02d.png" --camera "$DATA/camera/camera-640x480.xml" --json \
+  --output "$WORK/out" > "$WORK/seq.jsonl" 2> "$WORK/seq.err" || fail "sequence exit code $?"
+[ "$(wc -l < "$WORK/seq.jsonl")" -eq 4 ] || fail "expected 4 JSON lines, got $(wc -l < "$WORK/seq.jsonl")"
+for i in 00 01 02 03; do [ -f "$WORK/out/ssl3-a3-$i.png" ] || fail "annotated image $i missing"; done
+python3 - "$WORK/seq.jsonl" <<'PY' || fail "JSON contract"
 import json, sys
 lines = open(sys.argv[1]).read().splitlines()
 for n, line in enumerate(lines):
@@ -72,35 +68,35 @@ assert abs(norm - math.sqrt(sum(c * c for c in pB))) < 0.15 * norm, (norm, pB)
 PY
 
 # Without a camera there is no range and no pose.
-"$bin" --input "$data/images/ssl3-a3-00.png" --json > "$work/one.json" 2>/dev/null || fail "single image exit code"
+"$BIN" --input "$DATA/images/ssl3-a3-00.png" --json > "$WORK/one.json" 2>/dev/null || fail "single image exit code"
 python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["cMo"] is None and t["range_m"] is None' \
-  "$work/one.json" || fail "no camera: cMo and range_m must be null"
+  "$WORK/one.json" || fail "no camera: cMo and range_m must be null"
 
-# A file with no landmark: target not found, exactly as the spec writes it.
-python3 -c 'import sys; open(sys.argv[1],"wb").write(b"P5\n64 48\n255\n" + bytes([128]*64*48))' "$work/grey.pgm"
-"$bin" --input "$work/grey.pgm" --json > "$work/grey.json" 2>/dev/null || fail "grey image exit code"
-grep -q '"target": {"found": false, "n_landmarks": 0}' "$work/grey.json" || fail "not-found record: $(cat "$work/grey.json")"
+# A file with no landmark: target not found, exactly as doc/detection-json.md writes it.
+python3 -c 'import sys; open(sys.argv[1],"wb").write(b"P5\n64 48\n255\n" + bytes([128]*64*48))' "$WORK/grey.pgm"
+"$BIN" --input "$WORK/grey.pgm" --json > "$WORK/grey.json" 2>/dev/null || fail "grey image exit code"
+grep -q '"target": {"found": false, "n_landmarks": 0}' "$WORK/grey.json" || fail "not-found record: $(cat "$WORK/grey.json")"
 
 # An unreadable image: an error record, one line on stderr, exit status 1.
-echo "not an image" > "$work/broken.png"
-"$bin" --input "$work/broken.png" --json > "$work/broken.json" 2> "$work/broken.err"
+echo "not an image" > "$WORK/broken.png"
+"$BIN" --input "$WORK/broken.png" --json > "$WORK/broken.json" 2> "$WORK/broken.err"
 [ $? -eq 1 ] || fail "unreadable image must exit 1"
 python3 -c 'import json,sys; o=json.load(open(sys.argv[1])); assert o["image"]=="broken.png" and "error" in o' \
-  "$work/broken.json" || fail "error record: $(cat "$work/broken.json")"
-[ "$(grep -c . "$work/broken.err")" -ge 1 ] || fail "no message on stderr"
+  "$WORK/broken.json" || fail "error record: $(cat "$WORK/broken.json")"
+[ "$(grep -c . "$WORK/broken.err")" -ge 1 ] || fail "no message on stderr"
 
 # Bad camera file, bad target file, bad option: exit 2 with one line on stderr naming the problem.
-echo "<root><camera><name>Other</name></camera></root>" > "$work/cam.xml"
-"$bin" --input "$data/images/ssl3-a3-00.png" --camera "$work/cam.xml" > /dev/null 2> "$work/cam.err"
+echo "<root><camera><name>Other</name></camera></root>" > "$WORK/cam.xml"
+"$BIN" --input "$DATA/images/ssl3-a3-00.png" --camera "$WORK/cam.xml" > /dev/null 2> "$WORK/cam.err"
 [ $? -eq 2 ] || fail "bad camera file must exit 2"
-[ "$(wc -l < "$work/cam.err")" -eq 1 ] && grep -q "cam.xml" "$work/cam.err" || fail "camera error: $(cat "$work/cam.err")"
-printf 'name t\nlandmark B 0 0 0 abc\n' > "$work/bad-target.txt"
-"$bin" --input "$data/images/ssl3-a3-00.png" --target "$work/bad-target.txt" > /dev/null 2> "$work/target.err"
+[ "$(wc -l < "$WORK/cam.err")" -eq 1 ] && grep -q "cam.xml" "$WORK/cam.err" || fail "camera error: $(cat "$WORK/cam.err")"
+printf 'name t\nlandmark B 0 0 0 abc\n' > "$WORK/bad-target.txt"
+"$BIN" --input "$DATA/images/ssl3-a3-00.png" --target "$WORK/bad-target.txt" > /dev/null 2> "$WORK/target.err"
 [ $? -eq 2 ] || fail "bad target file must exit 2"
-[ "$(wc -l < "$work/target.err")" -eq 1 ] && grep -q "bad-target.txt:2" "$work/target.err" ||
-  fail "target error: $(cat "$work/target.err")"
-"$bin" --input x --window 500 > /dev/null 2> "$work/opt.err"
-[ $? -eq 2 ] && [ "$(wc -l < "$work/opt.err")" -eq 1 ] || fail "bad window: $(cat "$work/opt.err")"
-"$bin" > /dev/null 2>&1
+[ "$(wc -l < "$WORK/target.err")" -eq 1 ] && grep -q "bad-target.txt:2" "$WORK/target.err" ||
+  fail "target error: $(cat "$WORK/target.err")"
+"$BIN" --input x --window 500 > /dev/null 2> "$WORK/opt.err"
+[ $? -eq 2 ] && [ "$(wc -l < "$WORK/opt.err")" -eq 1 ] || fail "bad window: $(cat "$WORK/opt.err")"
+"$BIN" > /dev/null 2>&1
 [ $? -eq 2 ] || fail "missing --input must exit 2"
-echo "e2e detector: ok"
+e2e_finish

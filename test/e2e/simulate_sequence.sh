@@ -1,35 +1,15 @@
 #!/usr/bin/env bash
 # End-to-end check of tutorial-ssl-simulate-sequence: help text, one-line errors, byte-identical output for a
-# seed, the sequence format (the shared checker when present), AprilTag and wide-camera sequences, and frames
+# seed, the sequence format (tutorial-ssl-check-sequence), AprilTag and wide-camera sequences, and frames
 # without ground truth while the target is out of view.
 # Usage: bash simulate_sequence.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
-set -u
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-simulate-sequence "$@"
 
-BIN="$1/tutorial-ssl-simulate-sequence"
-DATA="$2"
-WORK=$(mktemp -d "$PWD/simulate_sequence.XXXXXX")
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
-
-FAILS=0
-fail() {
-  echo "FAIL: $*" >&2
-  FAILS=$((FAILS + 1))
-}
-pass() { echo "ok: $*"; }
-
-[ -x "$BIN" ] || { echo "FAIL: no executable $BIN" >&2; exit 1; }
-
-# The shared sequence-format checker, where this machine has it.
-CHECKER=""
-for c in "${VISP_SSL_CHECK_SEQUENCE:-}" "$DATA/../scripts/check-sequence" "$DATA/../../shared/tools/check-sequence" \
-  /work/shared/tools/check-sequence; do
-  if [ -n "$c" ] && [ -f "$c" ]; then CHECKER="$c"; break; fi
-done
+# The project's sequence checker (doc/sequence-format.md); it must be there, as the simulator is.
+CHECKER="$BIN_DIR/tutorial-ssl-check-sequence"
+[ -x "$CHECKER" ] || { echo "FAIL: no executable $CHECKER" >&2; exit 1; }
 check_format() {
-  if [ -z "$CHECKER" ]; then
-    echo "skip: check-sequence not found (set VISP_SSL_CHECK_SEQUENCE)"
-  elif python3 "$CHECKER" "$1" >check.out 2>&1; then
+  if "$CHECKER" "$1" >check.out 2>&1; then
     pass "check-sequence $1: $(cat check.out)"
   else
     fail "check-sequence $1: $(cat check.out)"
@@ -132,8 +112,4 @@ fi
 "$BIN" --frames 1 --supersampling 1 --camera "$DATA/camera/camera-640x480.xml" --output cam --colour >/dev/null 2>&1 ||
   fail "data/camera/camera-640x480.xml is not accepted"
 
-if [ "$FAILS" -ne 0 ]; then
-  echo "$FAILS check(s) failed" >&2
-  exit 1
-fi
-echo "all checks passed"
+e2e_finish

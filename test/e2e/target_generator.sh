@@ -2,20 +2,7 @@
 # End-to-end check of tutorial-ssl-target-generator: help text, the three outputs at 1:1 scale,
 # PNG size and pixel colours against the pattern of Eq. 1, errors on one stderr line, --linear.
 # Usage: bash target_generator.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
-set -u
-
-BIN="$1/tutorial-ssl-target-generator"
-DATA="$2"
-WORK=$(mktemp -d "$PWD/target_generator.XXXXXX")
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
-
-FAILS=0
-fail() {
-  echo "FAIL: $*" >&2
-  FAILS=$((FAILS + 1))
-}
-pass() { echo "ok: $*"; }
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-target-generator "$@"
 
 # "W H" of the first /MediaBox of a PDF (cairo writes the page dictionary uncompressed).
 mediabox() { grep -a -o '/MediaBox *\[[^]]*\]' "$1" | head -1 | tr -d '[]' | awk '{print $4, $5}'; }
@@ -24,8 +11,6 @@ near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d
 pngsize() {
   od -An -tu1 -j16 -N8 "$1" | awk '{ print $1*16777216 + $2*65536 + $3*256 + $4, $5*16777216 + $6*65536 + $7*256 + $8 }'
 }
-
-[ -x "$BIN" ] || { echo "FAIL: no executable $BIN" >&2; exit 1; }
 
 # --help: exit 0 and every option documented.
 if "$BIN" --help >help.txt 2>help.err; then
@@ -93,7 +78,7 @@ for y in range(h):
             line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
     rows.append(line); prev = line
 k = dpi / 0.0254
-x0, y0 = -0.051 - 0.21, -0.1485          # ssl3-a3 sheet corner in the target frame (spec)
+x0, y0 = -0.051 - 0.21, -0.1485          # ssl3-a3 sheet corner in the target frame (doc/target-ssl3-a3.md)
 def grey(X, Y):
     u, v = int(math.floor((X - x0) * k)), int(math.floor((Y - y0) * k))
     return rows[v][u * bpp]
@@ -173,8 +158,4 @@ else
 fi
 [ -s lin.err ] && fail "--linear: unexpected stderr: $(cat lin.err)"
 
-if [ "$FAILS" -ne 0 ]; then
-  echo "$FAILS check(s) failed" >&2
-  exit 1
-fi
-echo "all target generator checks passed"
+e2e_finish

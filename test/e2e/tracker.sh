@@ -2,42 +2,38 @@
 # End-to-end check of tutorial-ssl-tracker: --help, one-line errors with the documented exit codes, and a run
 # on the sample sequence approach-clear (CSV header and rows, annotated images, summary table).
 # Usage: tracker.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
-set -u
-bin="$1/tutorial-ssl-tracker"
-data="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+E2E_FAIL_FAST=1
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-tracker "$@"
 
-"$bin" --help > "$work/help" || fail "--help exit code"
+"$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --sequence --csv --output-dir --display --no-odometry --small-landmarks --particles --seed \
            --full-search --max-frames --quiet --summary --help; do
-  grep -q -- "$opt" "$work/help" || fail "--help does not mention $opt"
+  grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
 # Bad options: exit 2 and one line on stderr naming the problem.
 check_error() { # expected_code pattern args...
   local code=$1 pattern=$2; shift 2
-  "$bin" "$@" > "$work/out" 2> "$work/err"
+  "$BIN" "$@" > "$WORK/out" 2> "$WORK/err"
   local rc=$?
   [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
-  [ "$(wc -l < "$work/err")" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat "$work/err")"
-  grep -q -- "$pattern" "$work/err" || fail "$* : stderr does not mention $pattern: $(cat "$work/err")"
+  [ "$(wc -l < "$WORK/err")" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat "$WORK/err")"
+  grep -q -- "$pattern" "$WORK/err" || fail "$* : stderr does not mention $pattern: $(cat "$WORK/err")"
 }
 check_error 2 "--sequence is required"
-check_error 2 "unknown option" --sequence "$data/sequences/approach-clear" --bogus
+check_error 2 "unknown option" --sequence "$DATA/sequences/approach-clear" --bogus
 check_error 2 "needs a value" --sequence
-check_error 2 "--small-landmarks" --sequence "$data/sequences/approach-clear" --small-landmarks sometimes
-check_error 2 "--particles" --sequence "$data/sequences/approach-clear" --particles -3
-check_error 2 "--max-frames" --sequence "$data/sequences/approach-clear" --max-frames abc
-check_error 1 "no-such-sequence" --sequence "$work/no-such-sequence"
+check_error 2 "--small-landmarks" --sequence "$DATA/sequences/approach-clear" --small-landmarks sometimes
+check_error 2 "--particles" --sequence "$DATA/sequences/approach-clear" --particles -3
+check_error 2 "--max-frames" --sequence "$DATA/sequences/approach-clear" --max-frames abc
+check_error 1 "no-such-sequence" --sequence "$WORK/no-such-sequence"
 
 # A run on approach-clear: one CSV row per frame, the documented columns, annotated images, the summary.
-"$bin" --sequence "$data/sequences/approach-clear" --csv "$work/track.csv" --output-dir "$work/annotated" \
-  --summary > "$work/log" 2> "$work/err" || fail "run exit code $?: $(cat "$work/err")"
-[ -f "$work/annotated/000011.png" ] || fail "annotated image 000011.png missing"
-grep -q "^| 0-1 |" "$work/log" || fail "no summary table in the output"
-python3 - "$work/track.csv" <<'PY' || fail "CSV contract"
+"$BIN" --sequence "$DATA/sequences/approach-clear" --csv "$WORK/track.csv" --output-dir "$WORK/annotated" \
+  --summary > "$WORK/log" 2> "$WORK/err" || fail "run exit code $?: $(cat "$WORK/err")"
+[ -f "$WORK/annotated/000011.png" ] || fail "annotated image 000011.png missing"
+grep -q "^| 0-1 |" "$WORK/log" || fail "no summary table in the output"
+python3 - "$WORK/track.csv" <<'PY' || fail "CSV contract"
 import csv, math, sys
 rows = list(csv.reader(open(sys.argv[1])))
 header = rows[0]
@@ -69,7 +65,7 @@ assert float(last["angle_error_deg"]) < 5, last["angle_error_deg"]
 PY
 
 # Without odometry, to standard output: the same number of rows.
-"$bin" --sequence "$data/sequences/approach-clear" --csv - --no-odometry --quiet > "$work/stdout.csv" 2> "$work/err" \
+"$BIN" --sequence "$DATA/sequences/approach-clear" --csv - --no-odometry --quiet > "$WORK/stdout.csv" 2> "$WORK/err" \
   || fail "--csv - exit code"
-[ "$(wc -l < "$work/stdout.csv")" -eq 13 ] || fail "--csv -: expected 13 lines, got $(wc -l < "$work/stdout.csv")"
-echo "tracker.sh: ok"
+[ "$(wc -l < "$WORK/stdout.csv")" -eq 13 ] || fail "--csv -: expected 13 lines, got $(wc -l < "$WORK/stdout.csv")"
+e2e_finish

@@ -2,22 +2,8 @@
 # End-to-end check of tutorial-ssl-vs-apriltag: help text, one-line errors, the report on the sample sequences
 # (rows, rates, files), a recording without ground truth, and the baseline on ViSP's AprilTag benchmark image.
 # Usage: bash vs_apriltag.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
-set -u
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-vs-apriltag "$@"
 
-BIN="$1/tutorial-ssl-vs-apriltag"
-DATA="$2"
-WORK=$(mktemp -d "$PWD/vs_apriltag.XXXXXX")
-trap 'rm -rf "$WORK"' EXIT
-cd "$WORK" || exit 1
-
-FAILS=0
-fail() {
-  echo "FAIL: $*" >&2
-  FAILS=$((FAILS + 1))
-}
-pass() { echo "ok: $*"; }
-
-[ -x "$BIN" ] || { echo "FAIL: no executable $BIN" >&2; exit 1; }
 SEQ="$DATA/sequences"
 
 # --help: exit 0, names every option.
@@ -92,13 +78,33 @@ echo "$r" | grep -qE '\| [01]\.[0-9]{2} \([0-8]/8\) \|' && pass "AprilTag rate c
 # The AprilTag sample is rendered up to 10 m: the baseline finds the tag at 0.5 to 4 m at least.
 echo "$r" | awk -F'|' '{ for (i = 7; i <= 9; ++i) if ($i !~ /1\.00/) exit 1 }' && pass "AprilTag detects 0-4 m" ||
   fail "AprilTag misses the tag within 4 m: $r"
-bad=$(grep -E '^\| ' report.txt | awk -F'|' 'NF != 19' | head -1)
-[ -z "$bad" ] && pass "every table row has 17 cells" || fail "row with a wrong number of cells: $bad"
+bad=$(grep -E '^\| ' report.txt | awk -F'|' 'NF != 20' | head -1)
+[ -z "$bad" ] && pass "every table row has 18 cells" || fail "row with a wrong number of cells: $bad"
 grep -q "Same views" report.txt && fail "the sample sequences are no pair, but a pair table was printed" ||
   pass "no pair among the samples"
 for f in report.md summary.csv frames.csv rate_vs_range.png pose_error_vs_range.png; do
   [ -s "out/$f" ] && pass "wrote $f" || fail "did not write $f"
 done
+# Position-only poses (the SSL tracker on B alone, beyond 3.1 m in approach-clear) have no angle error: their
+# angle cell is empty in frames.csv, they are left out of the angle median and counted apart in the report.
+head -1 out/frames.csv | grep -q ',angle_err_deg,time_ms,orientation_known$' || fail "frames.csv header: $(head -1 out/frames.csv)"
+awk -F, 'NR > 1 && $13 == 0 && $11 != "" { exit 1 }' out/frames.csv && pass "no angle error on position-only frames" ||
+  fail "a position-only frame has an angle error: $(awk -F, 'NR > 1 && $13 == 0 && $11 != ""' out/frames.csv | head -1)"
+np=$(awk -F, '$1 == "approach-clear" && $6 == 1 && $7 == 1 && $13 == 0' out/frames.csv | wc -l)
+na=$(awk -F, '$1 == "approach-clear" && $6 == 1 && $7 == 1 && $13 == 1 && $11 != ""' out/frames.csv | wc -l)
+cell=$(row approach-clear SSL clear | awk -F'|' '{ gsub(/ /, "", $16); print $16 }')
+if [ "$np" -gt 0 ] && [ "$na" -gt 0 ] && [ "$cell" = "$np" ]; then
+  pass "approach-clear: $np position-only frames counted apart, $na with an angle error"
+else
+  fail "approach-clear: position-only cell '$cell', frames.csv: $np position-only, $na with an angle error"
+fi
+median=$(awk -F, '$1 == "approach-clear" && $11 != "" { print $11 }' out/frames.csv | sort -g |
+  awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
+reported=$(row approach-clear SSL clear | awk -F'|' '{ gsub(/ /, "", $15); print $15 }')
+near=$(awk -v a="$median" -v b="$reported" 'BEGIN { d = a - b; print (d < 0.006 && d > -0.006) ? 1 : 0 }')
+[ "$near" = 1 ] && pass "angle median $reported deg is that of the frames with an orientation" ||
+  fail "angle median $reported, frames with an orientation give $median"
+grep -q ',position_only_frames$' out/summary.csv || fail "summary.csv header lacks position_only_frames"
 n=$(($(wc -l <out/frames.csv) - 1))
 [ "$n" -eq 28 ] && pass "frames.csv has 28 rows" || fail "frames.csv has $n rows, expected 28"
 head -c 8 out/rate_vs_range.png | od -An -c | grep -q 'P   N   G' && pass "rate_vs_range.png is a PNG" ||
@@ -141,8 +147,4 @@ else
 fi
 expect_error "bad benchmark folder" "tag36_11_640x480.png" --check-visp-benchmark nowhere
 
-if [ "$FAILS" -ne 0 ]; then
-  echo "$FAILS check(s) failed" >&2
-  exit 1
-fi
-echo "all checks passed"
+e2e_finish

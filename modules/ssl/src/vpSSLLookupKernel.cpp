@@ -1,6 +1,6 @@
 /*
   SIMD table look-up of bytes (the normalisation table of vpSSLDetector), compiled once per Highway target and
-  dispatched at run time. The scalar loop takes one byte per cycle at best and was a tenth of a 640x480
+  dispatched at run time. A scalar loop takes one byte per cycle at best, a tenth of a 640x480
   detection; byte shuffles look up 16 entries of the table per 128-bit block at once.
 
   The 256-entry table is 16 tables of 16 entries, one per high nibble of the index. For table h, the index

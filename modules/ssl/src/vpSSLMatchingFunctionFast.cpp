@@ -1,5 +1,5 @@
 /*
-  Fast matching function (issue 4): the SIMD kernel of vpSSLMatchingKernel.cpp driven over spans of rows, split
+  Fast matching function: the SIMD kernel of vpSSLMatchingKernel.cpp driven over spans of rows, split
   across threads, for the whole image or for regions of interest. Every pixel is computed independently with
   integer arithmetic, so the map is the same as computeReference() whatever the target or the thread count.
 */

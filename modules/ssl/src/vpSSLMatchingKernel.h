@@ -1,7 +1,8 @@
 /*
   Private interface of the SIMD matching kernel (paper Eq. 3 and 5), implemented with Google Highway in
   vpSSLMatchingKernel.cpp and picked at run time for the CPU. No Highway type appears here so that the public
-  headers stay free of it (STYLE.md pimpl rule).
+  headers stay free of it: a program that includes them needs no Highway headers, and the kernel's targets
+  can change without breaking the library's ABI.
 */
 #ifndef VP_SSL_MATCHING_KERNEL_H
 #define VP_SSL_MATCHING_KERNEL_H

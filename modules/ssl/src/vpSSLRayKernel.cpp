@@ -8,13 +8,13 @@
   - sample(): consecutive samples of a ray, their four neighbours gathered as two 32-bit words at byte offsets
     (the low bytes are a pixel and its right neighbour);
   - screen(): consecutive radii of the grid, each lane computing the three outermost rings' mean levels from the
-    ray's running integral (gathers) and the two tests on them that ended almost every call of the scalar ring test
-    these kernels replaced (vpSSLRadiusEstimator::rayScore(); its copy is test_ring_kernels' reference);
+    ray's running integral (gathers) and the two tests on them that settle almost every radius (test_ring_kernels holds
+    the plain scalar version as its reference);
   - score(): the radii that pass, each lane reading every ring of its radius and the tests on the whole reading,
     lanes that finish at different rings held under masks.
-  The arithmetic is the scalar code's, operation for operation, in doubles (the profile's differences in floats,
-  as there); this file is compiled with -ffp-contract=off so that no multiply-add is fused: the results are those
-  of the scalar code bit for bit on every target.
+  The arithmetic is that of the scalar reference, operation for operation, in doubles (the profile's differences in
+  floats, as there); this file is compiled with -ffp-contract=off so that no multiply-add is fused: the results are
+  those of the scalar reference bit for bit on every target.
 */
 #undef HWY_TARGET_INCLUDE
 // foreach_target.h re-includes this file once per target; the path is relative to modules/ssl/include.

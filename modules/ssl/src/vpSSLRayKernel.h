@@ -60,8 +60,9 @@ struct ScoreRules
 /*!
   Indices i in [0, n) of the radii R = radii[i] at which the ray's three outermost rings ([q R, R], [q^2 R, q R],
   [q^3 R, q^2 R]) are all readable, the outermost pair's contrast (white minus black) is at least
-  profile.minContrast, and the next pair's is at least a quarter of the larger of the two: the tests that end
-  the scalar ring test (vpSSLRadiusEstimator::rayScore() until these kernels) at every other radius. Written to \e
+  profile.minContrast, and the next pair's is at least a quarter of the larger of the two: the tests that settle
+  almost every radius of a cluttered image, so that score() reads the few that pass in full (test_ring_kernels
+  holds a plain scalar version of both as their reference). Written to \e
   survivors in increasing order. \return their number.
 */
 std::size_t screen(const Profile &profile, const double *radii, std::size_t n, uint32_t *survivors);

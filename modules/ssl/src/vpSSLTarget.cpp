@@ -306,7 +306,7 @@ vpSSLTarget::vpSSLTarget()
 
 vpSSLTarget vpSSLTarget::ssl3a3()
 {
-  // Values of the spec table (target-ssl3-a3.md), not computed from the triangle: the printed sheet,
+  // Values of the table in doc/target-ssl3-a3.md, not computed from the triangle: the printed sheet,
   // recorded sequences and evaluation sets must agree on these exact numbers.
   vpSSLTarget t;
   t.setName("ssl3-a3");

@@ -54,7 +54,10 @@ public:
     Adds a series. \p x and \p y must have the same size (else vpException::dimensionError naming the
     series). Points where x or y is not finite are gaps.
     \param name Legend entry (an empty name is left out of the legend).
+    \param x Horizontal coordinates of the points.
+    \param y Vertical coordinates of the points.
     \param color vpColor::none picks the next colour of a palette readable by colour-blind readers.
+    \param style How the points are drawn (vpSSLPlotStyle).
   */
   void addSeries(const std::string &name, const std::vector<double> &x, const std::vector<double> &y,
                  const vpColor &color = vpColor::none, vpSSLPlotStyle style = STYLE_LINE);

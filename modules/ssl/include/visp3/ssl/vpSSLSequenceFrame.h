@@ -14,7 +14,7 @@
 /*!
   \struct vpSSLSequenceFrame
   \ingroup group_ssl
-  \brief One frame of a recorded sequence: a row of frames.csv (../shared/spec/sequence-format.md).
+  \brief One frame of a recorded sequence: a row of frames.csv (doc/sequence-format.md).
 
   Odometry and ground truth are optional: a recording without odometry, or a frame where the truth is
   unknown or the target is out of view, has the matching flag false and empty cells in frames.csv.

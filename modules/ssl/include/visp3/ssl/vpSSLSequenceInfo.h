@@ -13,7 +13,7 @@
 /*!
   \struct vpSSLSequenceInfo
   \ingroup group_ssl
-  \brief The content of a sequence's sequence.json (../shared/spec/sequence-format.md):
+  \brief The content of a sequence's sequence.json (doc/sequence-format.md):
 
   \code{.json}
   {

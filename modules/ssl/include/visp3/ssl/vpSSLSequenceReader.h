@@ -19,7 +19,7 @@
 /*!
   \class vpSSLSequenceReader
   \ingroup group_ssl
-  \brief Reads a recorded sequence folder (../shared/spec/sequence-format.md) one frame at a time.
+  \brief Reads a recorded sequence folder (doc/sequence-format.md) one frame at a time.
 
   open() reads camera.xml (camera "Camera" with the projection model found in the file, the model with
   distortion when both are there), sequence.json and the

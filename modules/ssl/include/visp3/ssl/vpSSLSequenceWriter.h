@@ -19,7 +19,7 @@
 /*!
   \class vpSSLSequenceWriter
   \ingroup group_ssl
-  \brief Writes a recorded sequence folder (../shared/spec/sequence-format.md) one frame at a time: what the
+  \brief Writes a recorded sequence folder (doc/sequence-format.md) one frame at a time: what the
   simulator writes and what a user records on a vehicle, read back by vpSSLSequenceReader.
 
   open() creates the folder, images/, camera.xml, sequence.json and the frames.csv header; write() saves the

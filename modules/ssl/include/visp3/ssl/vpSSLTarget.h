@@ -69,7 +69,7 @@ public:
   //! An empty target; fill it with addLandmark() or use ssl3a3() / load().
   vpSSLTarget();
 
-  //! The built-in default target ssl3-a3 (../shared/spec/target-ssl3-a3.md).
+  //! The built-in default target ssl3-a3 (doc/target-ssl3-a3.md).
   static vpSSLTarget ssl3a3();
 
   /*!

@@ -85,7 +85,7 @@ enum vpSSLTrackerState
   }
   \endcode
 
-  <b>Small-landmark mode.</b> With its default window (w = 40) the detector no longer sees a landmark whose
+  <b>Small-landmark mode.</b> With its default window (w = 40) the detector does not see a landmark whose
   smaller semi-axis is below about 25 px: with a 554 px camera, B (R = 0.1 m) beyond about 2.2 m and S1, S2
   (R = 0.05 m) beyond about 1.1 m. Its small-landmark mode sees them down to 8 px of radius (B to about 7 m)
   for several times the matching cost. Unless setAutomaticSmallLandmarkMode(false), the tracker switches it
@@ -102,7 +102,7 @@ enum vpSSLTrackerState
     position.
   getLastSmallLandmarkMode() tells which mode the last detection used.
 
-  Accuracy per range band against the single-frame pose: doc/benchmarks.md, "Tracker (issue 5)".
+  Accuracy per range band against the single-frame pose: doc/benchmarks.md, "Tracker".
   See test/test_tracker.cpp, test/test_tracker_sequences.cpp and tutorial-ssl-tracker.cpp.
 */
 class VISP_SSL_EXPORT vpSSLTracker
