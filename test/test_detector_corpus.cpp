@@ -13,10 +13,10 @@
 
 namespace {
 // Recall of B over the eligible views of the fixed subset below (seed 7, 70 views) with the default detector, as
-// measured when the corpus was written: B found in 13 of its 29 eligible views (45 %). It is a floor: a regression
-// fails here; raise it as the detector improves.
+// measured on the current main: B found in 19 of its 29 eligible views (66 %). It is a floor: a regression fails
+// here; raise it as the detector improves.
 const unsigned int kEligibleB = 29;
-const unsigned int kMeasuredFoundB = 13;
+const unsigned int kMeasuredFoundB = 19;
 
 // A clean view: no water loss or veiling light, uniform light, no blur, noise, gamma or JPEG, the sheet on dark
 // water, fine supersampling; the pose is set by the caller.

@@ -87,6 +87,7 @@ vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
       m_rois(), m_noRois(), m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
 {
   m_radiusEstimator.setP(target.getP());
+  m_concentricReader.setP(target.getP());
 }
 
 void vpSSLDetector::setWindow(unsigned int w)
@@ -185,6 +186,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     }
   }
   m_radiusEstimator.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
+  m_concentricReader.setRadiusRange(kMinRadius * scale, m_maxRadius * scale);
   m_radiusEstimator.setPixelScale(scale);
   // a_xi and b_xi of the full-resolution window, for Eq. 5 at single pixels (refinePeak(), scoreAt()).
   for (unsigned int xi = 0; xi <= m_match.getWindow(); ++xi) {
@@ -445,7 +447,9 @@ void vpSSLDetector::searchRegions(const vpImage<unsigned char> &I, const vpImage
         l.v = fine.v;
         l.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
       }
-      if (!m_radiusEstimator.estimate(*raw, l)) {
+      // The rays' reading is the more precise; where it cannot follow the rings (small, blurred or strongly
+      // oblique landmarks), the rings are read all around at once.
+      if (!m_radiusEstimator.estimate(*raw, l) && !m_concentricReader.read(*raw, l)) {
         continue;
       }
     }

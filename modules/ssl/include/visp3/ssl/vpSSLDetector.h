@@ -13,6 +13,7 @@
 #include <visp3/core/vpRect.h>
 #include <visp3/detection/vpDetectorBase.h>
 #include <visp3/ssl/vpSSLBrightnessNormalizer.h>
+#include <visp3/ssl/vpSSLConcentricReader.h>
 #include <visp3/ssl/vpSSLLandmark.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPeakDetector.h>
@@ -242,6 +243,7 @@ private:
   vpSSLMatchingFunction m_match;
   vpSSLPeakDetector m_peakDetector;
   vpSSLRadiusEstimator m_radiusEstimator;
+  vpSSLConcentricReader m_concentricReader;
   vpSSLTargetIdentifier m_identifier;
   bool m_normalize;
   bool m_upsample;

@@ -1,0 +1,84 @@
+/*!
+  \file vpSSLConcentricReader.h
+  \brief Reads a landmark from the whole of its rings: concentric-ellipse fit of the gradients, ring phase, outer ring.
+*/
+#ifndef VP_SSL_CONCENTRIC_READER_H
+#define VP_SSL_CONCENTRIC_READER_H
+
+#include <visp3/core/vpImage.h>
+#include <visp3/ssl/vpSSLConfig.h>
+#include <visp3/ssl/vpSSLLandmark.h>
+
+/*!
+  \class vpSSLConcentricReader
+  \ingroup group_ssl
+  \brief Reads a landmark from the whole of its rings rather than along a few rays.
+
+  Under any affine view the printed rings are concentric ellipses, so every image gradient inside a landmark is
+  normal to the ellipse through it. The centre and the ellipses' shape are the least-squares fit of that condition
+  over the gradients of a disc that grows from the candidate while the fit explains the gradients (it stops at
+  clutter, the sheet's edge or a neighbour). The radial profile averaged around those ellipses, in the log radius
+  where the square wave \f$ s_p \f$ of Eq. 1 is periodic, gives the rings' phase from all the resolved rings at
+  once; the outer ring is the outermost p-similar copy whose black ring stands dark against the white one inside
+  it in nearly every direction, as dark as the next black ring; the scale is then read where the profile crosses
+  the mid level at the two printed edges inside the outer ring (R sqrt(p) and R p), which blur does not move.
+
+  It reads landmarks that the ray reading of vpSSLRadiusEstimator rejects: small and blurred ones, strongly
+  oblique ones, and those whose rings a few rays cannot follow. vpSSLDetector asks it where the ray reading
+  fails. No memory is allocated by read().
+*/
+class VISP_SSL_EXPORT vpSSLConcentricReader
+{
+public:
+  //! A reader for p = 0.5 and radii of 4 to 300 px.
+  vpSSLConcentricReader();
+
+  //! Similarity ratio p of the printed landmark. \exception vpException unless in (0, 1).
+  void setP(double p);
+  //! Search range of the outer radius (px). \exception vpException unless 0 < minRadius < maxRadius.
+  void setRadiusRange(double minRadius, double maxRadius);
+
+  /*!
+    Reads the landmark whose centre is near (\e landmark.u, \e landmark.v) on the camera's grey image: fills u, v,
+    radius, minorRadius, theta, nbDirections and directionalRadius.
+    \return false if no landmark is read there.
+  */
+  bool read(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
+
+  //! Stage at which the last read() stopped: 1 the fit, 2 the phase, 3 the outer ring, 4 read.
+  int getStage() const { return m_stage; }
+
+  //! Quality of the last fit: gradient energy explained by the concentric ellipses, in [0, 1].
+  double getQuality() const { return m_quality; }
+
+  //! Correlation of the last read's ring profile with the square wave \f$ s_p \f$ (1: a sharp landmark).
+  double getSimilarity() const { return m_similarity; }
+
+private:
+  struct Fit
+  {
+    double u = 0., v = 0.;
+    double q[3] = {1., 0., 1.}; // (x - c)^T [q0 q1; q1 q2] (x - c), determinant 1
+    double quality = 0.;
+  };
+  bool fit(const vpImage<unsigned char> &I, double radius, Fit &f) const;
+  bool readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh);
+  double band(double tau0, double tau1, int sector) const;
+
+  double m_p;
+  double m_logStep; // log(1 / p): one period of the rings in log radius
+  double m_minRadius, m_maxRadius;
+  int m_stage;
+  double m_quality;
+  double m_similarity;
+
+  // Radial profile: bins of kBinsPerPeriod per period of log radius from m_tau0, per sector of directions.
+  static const int kSectors = 8;
+  static const int kMaxBins = 512;
+  double m_tau0;
+  int m_nbBins;
+  float m_sum[kMaxBins][kSectors];
+  unsigned short m_count[kMaxBins][kSectors];
+};
+
+#endif

@@ -1,0 +1,464 @@
+#include <visp3/ssl/vpSSLConcentricReader.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include <visp3/core/vpException.h>
+
+namespace {
+// Profile bins per period of the rings (a factor 1 / p of radius).
+const int kBinsPerPeriod = 24;
+// Rays of the radial profile (kRays / 8 per sector).
+const int kRays = 64;
+// The fit's disc grows by this factor per step, from kFirstRadius px.
+const double kGrowth = 1.25;
+const double kFirstRadius = 6.;
+// Largest disc searched for the rings' concentric structure when none has been seen yet (px): the innermost ring a
+// blur of sigma 4 px leaves readable lies at about 35 px.
+const double kLockRadius = 48.;
+// A fit explaining this share of the gradient energy is a landmark's rings; the disc stops growing once the share
+// falls below kKeepShare of the best one (it has reached clutter, the sheet's edge or a neighbour).
+const double kLocked = 0.8;
+const double kKeepShare = 0.9;
+const double kMinKept = 0.75;
+// Narrowest ring whose phase is read (px).
+const double kMinRingWidth = 1.2;
+// Smallest ring contrast (grey levels) read, and the share of it that each direction's outer pair must show.
+const double kMinContrast = 4.;
+const double kSectorShare = 0.5;
+// Share of the directions in view whose outer pair must show the contrast.
+const double kSectorsNeeded = 0.75;
+// How much lighter than the next black ring the outer one may be, relative to the contrast (same ink).
+const double kInkTolerance = 0.35;
+// Share of the contrast by which the white ring must be lighter than the black ring inside it.
+const double kInnerShare = 0.2;
+// Largest axis ratio of the ellipses read (a landmark seen up to 78 degrees off its normal) and smallest semi-axis
+// (px).
+const double kMaxAxisRatio = 5.;
+const double kMinMinorRadius = 2.5;
+// Largest distance (in periods) of a printed edge from where the inner rings' phase puts it.
+const double kEdgeWindow = 0.16;
+// Smallest correlation of the resolved rings' profile with the square wave s_p.
+const double kMinSimilarity = 0.5;
+// How much lighter than its inner part the outer part of the outer ring may be, relative to the contrast.
+const double kSolidShare = 0.5;
+// Alternating ring pairs needed, counted inwards from the outer ring.
+const int kMinPairs = 2;
+} // namespace
+
+vpSSLConcentricReader::vpSSLConcentricReader()
+    : m_p(0.5), m_logStep(std::log(2.)), m_minRadius(4.), m_maxRadius(300.), m_stage(0), m_quality(0.),
+      m_similarity(0.), m_tau0(0.), m_nbBins(0)
+{
+}
+
+void vpSSLConcentricReader::setP(double p)
+{
+  if (!(p > 0. && p < 1.)) {
+    throw vpException(vpException::badValue, "vpSSLConcentricReader: p %g not in (0, 1)", p);
+  }
+  m_p = p;
+  m_logStep = std::log(1. / p);
+}
+
+void vpSSLConcentricReader::setRadiusRange(double minRadius, double maxRadius)
+{
+  if (!(minRadius > 0. && minRadius < maxRadius)) {
+    throw vpException(vpException::badValue, "vpSSLConcentricReader: radius range [%g, %g]", minRadius, maxRadius);
+  }
+  m_minRadius = minRadius;
+  m_maxRadius = maxRadius;
+}
+
+bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, Fit &f) const
+{
+  const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
+  // A few hundred gradients describe the ellipses as well as all of them: the disc is sampled on a grid of about
+  // 32 x 32 points whatever its size.
+  const int stride = std::max(1, static_cast<int>(radius / 16.));
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    const double *q = f.q;
+    // Bounding box of the ellipse (x - c)^T Q (x - c) = radius^2 (det Q = 1).
+    const double hu = radius * std::sqrt(q[2]), hv = radius * std::sqrt(q[0]);
+    const int u0 = std::max(1, static_cast<int>(std::ceil(f.u - hu))), u1 = std::min(W - 2, static_cast<int>(f.u + hu));
+    const int v0 = std::max(1, static_cast<int>(std::ceil(f.v - hv))), v1 = std::min(H - 2, static_cast<int>(f.v + hv));
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d b = Eigen::Vector2d::Zero();
+    double explained = 0., energy = 0.;
+    const double r2max = radius * radius;
+    for (int v = v0; v <= v1; v += stride) {
+      const unsigned char *above = I[v - 1], *row = I[v], *below = I[v + 1];
+      for (int u = u0; u <= u1; u += stride) {
+        const double y1 = u - f.u, y2 = v - f.v;
+        const double n1 = q[0] * y1 + q[1] * y2, n2 = q[1] * y1 + q[2] * y2;
+        const double r2 = y1 * n1 + y2 * n2;
+        if (r2 > r2max || r2 < 1.) {
+          continue;
+        }
+        // Sobel gradient.
+        const double gx =
+            (above[u + 1] + 2. * row[u + 1] + below[u + 1]) - (above[u - 1] + 2. * row[u - 1] + below[u - 1]);
+        const double gy = (below[u - 1] + 2. * below[u] + below[u + 1]) - (above[u - 1] + 2. * above[u] + above[u + 1]);
+        const double gg = gx * gx + gy * gy;
+        if (gg == 0.) {
+          continue;
+        }
+        // The gradient must be parallel to the ellipse's normal Q y: its cross product with Q y is linear in Q's
+        // entries (shape, with c fixed) and in c (with Q fixed). Weighted by 1 / |Q y|^2, each residual is the
+        // gradient's magnitude times the sine of its angle to the normal.
+        const double nn = n1 * n1 + n2 * n2;
+        const double w = 1. / nn;
+        const Eigen::Vector3d a(-gy * y1, gx * y1 - gy * y2, gx * y2);
+        M.noalias() += w * a * a.transpose();
+        const double e = gx * n2 - gy * n1;
+        const Eigen::Vector2d h(gx * q[1] - gy * q[0], gx * q[2] - gy * q[1]);
+        A.noalias() += w * h * h.transpose();
+        b.noalias() += w * e * h;
+        const double c = gx * n1 + gy * n2;
+        explained += c * c * w;
+        energy += gg;
+      }
+    }
+    if (!(energy > 0.)) {
+      return false;
+    }
+    f.quality = explained / energy;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(M);
+    Eigen::Vector3d s = solver.eigenvectors().col(0);
+    if (s(0) < 0.) {
+      s = -s;
+    }
+    const double det = s(0) * s(2) - s(1) * s(1);
+    if (!(det > 0.)) {
+      return false;
+    }
+    const double k = 1. / std::sqrt(det);
+    // Axis ratio a / b: the trace of Q is (a / b) + (b / a) when its determinant is 1.
+    const double tr = (s(0) + s(2)) * k;
+    if (tr > kMaxAxisRatio + 1. / kMaxAxisRatio) {
+      return false;
+    }
+    f.q[0] = s(0) * k;
+    f.q[1] = s(1) * k;
+    f.q[2] = s(2) * k;
+    const double detA = A.determinant();
+    if (!(std::fabs(detA) > 1e-12 * (A(0, 0) * A(1, 1) + 1e-30))) {
+      return false;
+    }
+    Eigen::Vector2d step = A.inverse() * b;
+    const double length = step.norm();
+    if (length > 0.3 * radius) {
+      step *= 0.3 * radius / length;
+    }
+    f.u += step(0);
+    f.v += step(1);
+    if (!(f.u >= 0. && f.v >= 0. && f.u <= W - 1. && f.v <= H - 1.)) {
+      return false;
+    }
+    if (length < 0.01) {
+      break;
+    }
+  }
+  return true;
+}
+
+bool vpSSLConcentricReader::readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh)
+{
+  // Rays in the frame where the ellipses are circles: x = c + rho Q^(-1/2) (cos t, sin t).
+  Eigen::Matrix2d Q;
+  Q << f.q[0], f.q[1], f.q[1], f.q[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(Q);
+  const Eigen::Matrix2d S = solver.eigenvectors() * solver.eigenvalues().cwiseInverse().cwiseSqrt().asDiagonal() *
+                            solver.eigenvectors().transpose();
+  m_tau0 = tauLow;
+  m_nbBins = std::min(kMaxBins, static_cast<int>((tauHigh - tauLow) * kBinsPerPeriod) + 1);
+  std::fill(&m_sum[0][0], &m_sum[0][0] + kMaxBins * kSectors, 0.f);
+  std::fill(&m_count[0][0], &m_count[0][0] + kMaxBins * kSectors, static_cast<unsigned short>(0));
+  const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
+  for (int k = 0; k < kRays; ++k) {
+    const double t = 2. * M_PI * (k + 0.5) / kRays;
+    const double dx = S(0, 0) * std::cos(t) + S(0, 1) * std::sin(t);
+    const double dy = S(1, 0) * std::cos(t) + S(1, 1) * std::sin(t);
+    const int sector = k * kSectors / kRays;
+    for (int bin = 0; bin < m_nbBins; ++bin) {
+      const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+      const double x = f.u + rho * dx, y = f.v + rho * dy;
+      if (!(x >= 0. && y >= 0. && x < W && y < H)) {
+        break; // the rest of the ray is out of the image
+      }
+      const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+      const double fx = x - x0, fy = y - y0;
+      const double value = (1. - fy) * ((1. - fx) * I[y0][x0] + fx * I[y0][x0 + 1]) +
+                           fy * ((1. - fx) * I[y0 + 1][x0] + fx * I[y0 + 1][x0 + 1]);
+      m_sum[bin][sector] += static_cast<float>(value);
+      ++m_count[bin][sector];
+    }
+  }
+  return m_nbBins > 0;
+}
+
+double vpSSLConcentricReader::band(double tau0, double tau1, int sector) const
+{
+  // Mean level of the profile over [tau0, tau1) (in periods), in one sector or all (sector < 0); -1 if unseen.
+  const int b0 = std::max(0, static_cast<int>(std::ceil((tau0 - m_tau0) * kBinsPerPeriod - 0.5)));
+  const int b1 = std::min(m_nbBins - 1, static_cast<int>(std::floor((tau1 - m_tau0) * kBinsPerPeriod - 0.5)));
+  double sum = 0.;
+  int count = 0;
+  for (int bin = b0; bin <= b1; ++bin) {
+    for (int s = 0; s < kSectors; ++s) {
+      if (sector < 0 || s == sector) {
+        sum += m_sum[bin][s];
+        count += m_count[bin][s];
+      }
+    }
+  }
+  return count > 0 ? sum / count : -1.;
+}
+
+bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+{
+  m_stage = 1;
+  m_quality = 0.;
+  m_similarity = 0.;
+  if (I.getWidth() < 8 || I.getHeight() < 8) {
+    return false;
+  }
+  // 1. The disc grows while its gradients stay normal to one family of concentric ellipses.
+  Fit current, best;
+  current.u = landmark.u;
+  current.v = landmark.v;
+  double bestRadius = 0., qmax = 0.;
+  const double limit = 1.5 * m_maxRadius;
+  for (double r = kFirstRadius; r <= limit; r *= kGrowth) {
+    if (qmax < kLocked && r > kLockRadius) {
+      break; // no ring structure where the rings of any readable landmark would be
+    }
+    Fit trial = current;
+    if (!fit(I, r, trial)) {
+      if (qmax >= kLocked) {
+        break;
+      }
+      continue;
+    }
+    if (qmax >= kLocked && trial.quality < std::max(kMinKept, kKeepShare * qmax)) {
+      break;
+    }
+    if (std::hypot(trial.u - landmark.u, trial.v - landmark.v) > std::max(4., 0.5 * r)) {
+      break; // another structure pulled the centre away
+    }
+    // Until the rings lock the fit, each disc starts afresh from the candidate: a poor fit of a blurred centre
+    // would only mislead the next one.
+    if (trial.quality >= kLocked || qmax >= kLocked) {
+      current = trial;
+    }
+    if (trial.quality >= kLocked && trial.quality >= 0.97 * qmax) {
+      best = trial;
+      bestRadius = r;
+    }
+    qmax = std::max(qmax, trial.quality);
+  }
+  if (bestRadius == 0.) {
+    return false;
+  }
+  m_quality = best.quality;
+
+  // 2. The rings' phase from the radial profile of every resolved ring inside the fitted disc. In
+  //    tau = log_{1/p}(rho), s_p is a square wave of period 1, black just inside the outer radius tau_R.
+  m_stage = 2;
+  const double L = m_logStep;
+  const double tauLow = std::log(1.5) / L, tauHigh = std::log(std::min(limit, 2.5 * bestRadius)) / L;
+  readProfile(I, best, tauLow, tauHigh);
+  const double ringShare = 1. - std::sqrt(m_p); // width of the ring at radius rho, over rho
+  const double tauA = std::log(kMinRingWidth / ringShare) / L, tauB = std::log(bestRadius) / L;
+  double level[kMaxBins];
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    double sum = 0.;
+    int count = 0;
+    for (int s = 0; s < kSectors; ++s) {
+      sum += m_sum[bin][s];
+      count += m_count[bin][s];
+    }
+    level[bin] = count > 0 ? sum / count : -1.;
+  }
+  double bestCorrelation = -1e30, phase = 0.;
+  int used = 0;
+  for (int k = 0; k < 4 * kBinsPerPeriod; ++k) {
+    const double tauR = k / (4. * kBinsPerPeriod);
+    double correlation = 0.;
+    used = 0;
+    for (int bin = 0; bin < m_nbBins; ++bin) {
+      const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+      if (tau < tauA || tau > tauB || level[bin] < 0.) {
+        continue;
+      }
+      double x = tauR - tau;
+      x -= std::floor(x);
+      correlation += x < 0.5 ? -level[bin] : level[bin];
+      ++used;
+    }
+    if (correlation > bestCorrelation) {
+      bestCorrelation = correlation;
+      phase = tauR;
+    }
+  }
+  if (used < kBinsPerPeriod) {
+    return false; // less than one period of resolved rings
+  }
+
+  // 3. The outer ring: the outermost p-similar copy whose black ring is dark against the white one inside it in
+  //    nearly every direction, as dark as the next black ring, with the rings alternating inwards.
+  m_stage = 3;
+  double outer = 0.;
+  int good = 0;
+  for (int k = static_cast<int>(std::floor(tauHigh - phase)); k >= -2; --k) {
+    const double tR = phase + k;
+    const double R = std::exp(tR * L);
+    if (tR > tauHigh - 0.05 || R < m_minRadius) {
+      continue;
+    }
+    const double black = band(tR - 0.4, tR - 0.1, -1), white = band(tR - 0.9, tR - 0.6, -1);
+    const double black2 = band(tR - 1.4, tR - 1.1, -1);
+    if (black < 0. || white < 0.) {
+      continue;
+    }
+    const double contrast = white - black;
+    if (contrast < kMinContrast) {
+      continue;
+    }
+    int seen = 0;
+    good = 0;
+    for (int s = 0; s < kSectors; ++s) {
+      const double b = band(tR - 0.42, tR - 0.08, s), w = band(tR - 0.92, tR - 0.58, s);
+      if (b < 0. || w < 0.) {
+        continue;
+      }
+      ++seen;
+      good += w - b > kSectorShare * contrast ? 1 : 0;
+    }
+    if (seen < kSectors / 2 || good < kSectorsNeeded * seen) {
+      continue;
+    }
+    if (black2 >= 0. && ringShare * R * m_p > 2.5 && black > black2 + kInkTolerance * contrast) {
+      continue;
+    }
+    // The outer ring is printed solid out to R: its outer part is as dark as its inner part, but for the blur of the
+    // edge (rings that end inside it, a bull's-eye, leave it half light).
+    const double innerPart = band(tR - 0.4, tR - 0.25, -1), outerPart = band(tR - 0.2, tR - 0.1, -1);
+    if (innerPart < 0. || outerPart < 0. || outerPart - innerPart > kSolidShare * contrast) {
+      continue;
+    }
+    int pairs = 0;
+    for (int j = 0; j < 8; ++j) {
+      const double b = band(tR - j - 0.4, tR - j - 0.1, -1), w = band(tR - j - 0.9, tR - j - 0.6, -1);
+      if (b < 0. || w < 0. || w - b < 0.25 * contrast) {
+        break;
+      }
+      ++pairs;
+    }
+    // Pairs inside a ring narrower than the blur of a sharp lens (two camera pixels) may have faded.
+    int resolvable = 0;
+    for (int j = 0; j < kMinPairs; ++j) {
+      resolvable += ringShare * R * std::pow(m_p, j + 1) >= 2. ? 1 : 0;
+    }
+    // Whatever the blur, the white ring is lighter than the black ring inside it: a lone disc (a dot, a blob) has one
+    // edge, which passes for the outer pair only.
+    const double black1 = band(tR - 1.4, tR - 1.1, -1);
+    if (pairs < std::max(1, resolvable) || black1 < 0. || white - black1 < kInnerShare * contrast) {
+      continue;
+    }
+    outer = R;
+    // The scale from the two printed edges inside the outer ring (R sqrt(p): white to black, R p: black to white,
+    // going outwards), where the profile crosses the mid level between the rings: the widest rings, the least
+    // blurred, and both edges printed (the outer edge's outside is unknown).
+    const double mid = 0.5 * (black + white);
+    double shift = 0.;
+    int edges = 0;
+    for (int e = 0; e < 2; ++e) {
+      const double expected = tR - 0.5 * (e + 1); // in periods
+      const bool rising = e == 1;                 // outwards: black to white at R p... inwards white to black
+      double bestTau = 0., bestDistance = kEdgeWindow;
+      for (int bin = 0; bin + 1 < m_nbBins; ++bin) {
+        if (level[bin] < 0. || level[bin + 1] < 0.) {
+          continue;
+        }
+        const double a = level[bin] - mid, c = level[bin + 1] - mid;
+        // Outwards, the edge at R sqrt(p) goes from white to black, the one at R p from black to white.
+        const bool crosses = rising ? (a < 0. && c >= 0.) : (a > 0. && c <= 0.);
+        if (!crosses) {
+          continue;
+        }
+        const double tau = m_tau0 + (bin + 0.5 + a / (a - c)) / kBinsPerPeriod;
+        if (std::fabs(tau - expected) < bestDistance) {
+          bestDistance = std::fabs(tau - expected);
+          bestTau = tau;
+        }
+      }
+      if (bestDistance < kEdgeWindow) {
+        shift += bestTau - expected;
+        ++edges;
+      }
+    }
+    // Self-similarity: a printed edge within kEdgeWindow of where the inner rings' phase puts it, and the profile of
+    // the resolved rings inside R following the square wave (rings of equal width, a bull's-eye, follow it over a
+    // ring or two).
+    if (edges == 0) {
+      outer = 0.;
+      continue;
+    }
+    double mean = 0.;
+    int n = 0;
+    for (int bin = 0; bin < m_nbBins; ++bin) {
+      const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+      if (tau >= tauA && tau < tR && level[bin] >= 0.) {
+        mean += level[bin];
+        ++n;
+      }
+    }
+    mean /= std::max(1, n);
+    double sf = 0., ff = 0.;
+    for (int bin = 0; bin < m_nbBins; ++bin) {
+      const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+      if (tau >= tauA && tau < tR && level[bin] >= 0.) {
+        double x = tR - tau;
+        x -= std::floor(x);
+        const double f = level[bin] - mean;
+        sf += x < 0.5 ? -f : f;
+        ff += f * f;
+      }
+    }
+    m_similarity = n > 0 && ff > 0. ? sf / std::sqrt(ff * n) : 0.;
+    if (m_similarity < kMinSimilarity) {
+      outer = 0.;
+      continue;
+    }
+    outer = std::exp((tR + shift / edges) * L);
+    break;
+  }
+  if (outer == 0.) {
+    return false;
+  }
+
+  // 4. The outer ellipse: the level set rho = R of the fitted quadratic form.
+  m_stage = 4;
+  Eigen::Matrix2d Q;
+  Q << best.q[0], best.q[1], best.q[1], best.q[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(Q);
+  const double lmin = solver.eigenvalues()(0), lmax = solver.eigenvalues()(1);
+  landmark.u = best.u;
+  landmark.v = best.v;
+  landmark.radius = outer / std::sqrt(lmin);
+  landmark.minorRadius = outer / std::sqrt(lmax);
+  landmark.theta = std::atan2(solver.eigenvectors()(1, 0), solver.eigenvectors()(0, 0));
+  landmark.nbDirections = static_cast<unsigned int>(good);
+  const double c45 = M_SQRT1_2;
+  const double dirs[8][2] = {{1., 0.},  {c45, c45},   {0., 1.},  {-c45, c45},
+                             {-1., 0.}, {-c45, -c45}, {0., -1.}, {c45, -c45}};
+  for (int d = 0; d < 8; ++d) {
+    const double x = dirs[d][0], y = dirs[d][1];
+    landmark.directionalRadius[d] = outer / std::sqrt(best.q[0] * x * x + 2. * best.q[1] * x * y + best.q[2] * y * y);
+  }
+  return landmark.radius <= m_maxRadius && landmark.minorRadius >= kMinMinorRadius;
+}
