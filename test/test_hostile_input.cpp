@@ -82,7 +82,8 @@ std::string camera(const std::string &px, const std::string &u0 = "320", const s
 {
   return "<?xml version=\"1.0\"?>\n<root>\n  <camera>\n    <name>Camera</name>\n" + size +
          "    <model>\n      <type>perspectiveProjWithoutDistortion</type>\n      <px>" + px +
-         "</px>\n      <py>554.3</py>\n      <u0>" + u0 + "</u0>\n      <v0>240</v0>\n    </model>\n  </camera>\n</root>\n";
+         "</px>\n      <py>554.3</py>\n      <u0>" + u0 +
+         "</u0>\n      <v0>240</v0>\n    </model>\n  </camera>\n</root>\n";
 }
 } // namespace
 
@@ -111,6 +112,29 @@ TEST(HostileImage, WrappedSizeIsRejectedByEveryEntryPoint)
   tracker.getDetector().setSmallLandmarkMode(true); // upsampling first: the resample kernel would over-read
   tracker.setAutomaticSmallLandmarkMode(false);
   EXPECT_HAS(errorOf([&] { tracker.track(I, vpHomogeneousMatrix()); }), "vpSSLTracker::track");
+}
+
+TEST(HostileImage, KernelsStateAndCheckTheirBound)
+{
+  // A consistent image wider than the kernels support (65537 px rows: the resample kernel over-read on them).
+  const vpImage<unsigned char> wide(1, 65537, 0);
+  vpImage<int> M;
+  EXPECT_HAS(errorOf([&] { vpSSLMatchingFunction().compute(wide, M); }),
+             "vpSSLMatchingFunction::compute: 65537 x 1 pixels exceed the kernels' limit of 32768");
+  unsigned char lut[256];
+  EXPECT_HAS(errorOf([&] { vpSSLBrightnessNormalizer().computeLut(wide, lut); }), "kernels' limit");
+  vpCameraParameters cam;
+  cam.initPersProjWithoutDistortion(554.3, 554.3, 320, 240);
+  vpSSLTracker tracker(vpSSLTarget::ssl3a3(), cam);
+  EXPECT_HAS(errorOf([&] { tracker.track(wide); }), "vpSSLTracker::track: 65537 x 1 pixels: a side exceeds");
+  // The smallest images go through every kernel.
+  for (unsigned int w : {1u, 2u, 3u, 17u}) {
+    for (unsigned int h : {1u, 2u, 5u}) {
+      const vpImage<unsigned char> tiny(h, w, 100);
+      EXPECT_NO_THROW(vpSSLMatchingFunction().compute(tiny, M));
+      EXPECT_NO_THROW(tracker.track(tiny));
+    }
+  }
 }
 
 TEST(HostileImage, SizeLimitsAreStatedInTheMessage)
@@ -228,9 +252,9 @@ TEST_F(Hostile, CameraFileRejectsNonFiniteAndAbsurdIntrinsics)
 TEST_F(Hostile, CameraFileImageSizeIsBoundedAndNotZero)
 {
   const auto withSize = [&](const std::string &w, const std::string &h) {
-    return write("cam.xml", camera("554.3", "320",
-                                   "    <image_width>" + w + "</image_width>\n    <image_height>" + h +
-                                       "</image_height>\n"));
+    return write("cam.xml",
+                 camera("554.3", "320",
+                        "    <image_width>" + w + "</image_width>\n    <image_height>" + h + "</image_height>\n"));
   };
   unsigned int w = 0, h = 0;
   EXPECT_HAS(errorOf([&] { vpSSLCameraFile::load(withSize("0", "480"), "Camera", &w, &h); }),

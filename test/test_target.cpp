@@ -283,8 +283,7 @@ TEST_F(TargetFileTest, OmittedPIsHalfAndOmittedSheetIsBoundingBoxPlusLargestRadi
   EXPECT_DOUBLE_EQ(t.getLandmark(1).p, 0.5);
   EXPECT_DOUBLE_EQ(t.getP(), 0.5);
   // Landmarks of one target share p (the detector matches one square wave): a different one is an error.
-  EXPECT_THROW(vpSSLTarget::load(write("name t\nlandmark A 0 0 0 0.1\nlandmark B 0.3 0.1 0 0.05 0.4\n")),
-               vpException);
+  EXPECT_THROW(vpSSLTarget::load(write("name t\nlandmark A 0 0 0 0.1\nlandmark B 0.3 0.1 0 0.05 0.4\n")), vpException);
   // Discs span x in [-0.1, 0.35], y in [-0.1, 0.15]; margin 0.1 on each side.
   EXPECT_NEAR(t.getSheetWidth(), 0.65, 1e-12);
   EXPECT_NEAR(t.getSheetHeight(), 0.45, 1e-12);

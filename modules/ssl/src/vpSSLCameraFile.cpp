@@ -88,8 +88,10 @@ void vpSSLCameraFile::check(const vpCameraParameters &cam, const std::string &wh
     double value, low, high;
   };
   const double m = maxFocal();
-  const Value values[] = {{"px", cam.get_px(), minFocal(), m},     {"py", cam.get_py(), minFocal(), m},
-                          {"u0", cam.get_u0(), -m, m},             {"v0", cam.get_v0(), -m, m},
+  const Value values[] = {{"px", cam.get_px(), minFocal(), m},
+                          {"py", cam.get_py(), minFocal(), m},
+                          {"u0", cam.get_u0(), -m, m},
+                          {"v0", cam.get_v0(), -m, m},
                           {"kud", cam.get_kud(), -maxDistortion(), maxDistortion()},
                           {"kdu", cam.get_kdu(), -maxDistortion(), maxDistortion()}};
   for (const Value &v : values) {
@@ -142,8 +144,8 @@ vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std:
     for (const auto &side : sides) {
       std::string stated;
       const std::string tag = std::string("<") + side.first + ">";
-      if (side.second == 0 && camera != std::string::npos &&
-          text.find(tag, camera) < text.find("</camera>", camera) && tagText(text, side.first, camera, stated)) {
+      if (side.second == 0 && camera != std::string::npos && text.find(tag, camera) < text.find("</camera>", camera) &&
+          tagText(text, side.first, camera, stated)) {
         throw vpException(vpException::badValue, where + ": " + side.first + ": must be > 0, got \"" + stated + "\"");
       }
     }
@@ -177,8 +179,7 @@ vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std:
   }
   const std::string problem = intrinsicProblem(text, camera);
   if (!problem.empty()) {
-    throw vpException(vpException::badValue, "%s: camera \"%s\": %s", filename.c_str(), name.c_str(),
-                      problem.c_str());
+    throw vpException(vpException::badValue, "%s: camera \"%s\": %s", filename.c_str(), name.c_str(), problem.c_str());
   }
   throw vpException(vpException::badValue,
                     "%s: camera \"%s\": no readable <model> (type perspectiveProjWithoutDistortion or "

@@ -32,8 +32,7 @@ template <typename Type> void consistent(const vpImage<Type> &I, const char *wha
   if (uint64_t(I.getSize()) != w * h || (w * h > 0 && I.bitmap == nullptr)) {
     std::ostringstream os;
     os << what << ": " << w << " x " << h << " pixels = " << w * h << ", but the image holds " << I.getSize()
-       << " (vpImage's 32-bit size wrapped): a side exceeds the limit of " << vpSSLImageIo::maxImageSide()
-       << " pixels";
+       << " (vpImage's 32-bit size wrapped): a side exceeds the limit of " << vpSSLImageIo::maxImageSide() << " pixels";
     throw vpException(vpException::dimensionError, os.str());
   }
 }

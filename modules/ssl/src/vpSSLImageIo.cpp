@@ -236,7 +236,10 @@ void vpSSLImageIo::checkSize(uint64_t width, uint64_t height, const std::string 
   throw vpException(vpException::dimensionError, os.str());
 }
 
-void vpSSLImageIo::check(const vpImage<unsigned char> &I, const char *what) { vpSSLImageCheck::input(I, what); }
+void vpSSLImageIo::check(const vpImage<unsigned char> &I, const char *what)
+{
+  vpSSLImageCheck::input(I, what);
+}
 
 std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &width, uint64_t &height)
 {
@@ -295,6 +298,12 @@ std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &widt
   fail(filename, fileSize == 0 ? "empty file" : "unknown image format (PNG, JPEG, PGM/PPM/PBM or BMP expected)");
 }
 
-void vpSSLImageIo::read(vpImage<unsigned char> &I, const std::string &filename) { readImage(I, filename); }
+void vpSSLImageIo::read(vpImage<unsigned char> &I, const std::string &filename)
+{
+  readImage(I, filename);
+}
 
-void vpSSLImageIo::read(vpImage<vpRGBa> &I, const std::string &filename) { readImage(I, filename); }
+void vpSSLImageIo::read(vpImage<vpRGBa> &I, const std::string &filename)
+{
+  readImage(I, filename);
+}

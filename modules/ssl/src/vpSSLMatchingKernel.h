@@ -1,6 +1,9 @@
 /*
   Private interface of the SIMD matching kernel (paper Eq. 3 and 5), implemented with Google Highway in
-  vpSSLMatchingKernel.cpp and picked at run time for the CPU. No Highway type appears here so that the public
+  vpSSLMatchingKernel.cpp and picked at run time for the CPU. Sizes: width and height up to the kernels' bound
+  of vpSSLImageCheck (32768 a side, 2^28 pixels: int columns and rows, ptrdiff_t strides and offsets of the
+  padded copy, int32 map values), window w <= kMaxWindow (int16 sums); vpSSLMatchingFunction checks the image
+  before building Params. No Highway type appears here so that the public
   headers stay free of it (STYLE.md pimpl rule).
 */
 #ifndef VP_SSL_MATCHING_KERNEL_H

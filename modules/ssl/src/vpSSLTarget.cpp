@@ -89,8 +89,7 @@ std::pair<std::string, std::string> landmarkProblem(const vpSSLTargetLandmark &l
     // The detector matches one square wave: every landmark of a target shares its p.
     if (lm.p != o.p) {
       other = static_cast<int>(i);
-      os << lm.p << " differs from " << o.p << " of " << quote(o.name)
-         << " (the landmarks of a target share one p)";
+      os << lm.p << " differs from " << o.p << " of " << quote(o.name) << " (the landmarks of a target share one p)";
       return {"p", os.str()};
     }
     if (o.name == lm.name) {
