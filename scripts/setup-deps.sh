@@ -24,6 +24,8 @@ packages=(
   libgtest-dev libbenchmark-dev visp-images-data
   # Formatting check, and python3 for the sequence-format checker.
   clang-format python3
+  # libFuzzer targets (fuzz/, scripts/fuzz.sh): clang 14 and its runtime (libFuzzer, sanitizers).
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

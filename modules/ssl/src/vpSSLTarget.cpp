@@ -73,11 +73,12 @@ std::pair<std::string, std::string> landmarkProblem(const vpSSLTargetLandmark &l
     return {"radius", os.str()};
   }
   if (lm.radius < vpSSLTarget::minRadius() || lm.radius > vpSSLTarget::maxRadius()) {
-    os << "must be in [" << vpSSLTarget::minRadius() << ", " << vpSSLTarget::maxRadius() << "] m, got " << lm.radius;
+    os << "must be in [" << vpSSLTarget::minRadius() << ", " << vpSSLTarget::maxRadius() << "] m, got "
+       << formatNumber(lm.radius);
     return {"radius", os.str()};
   }
   if (!(lm.p >= vpSSLTarget::minP() && lm.p <= vpSSLTarget::maxP())) {
-    os << "must be in [" << vpSSLTarget::minP() << ", " << vpSSLTarget::maxP() << "], got " << lm.p;
+    os << "must be in [" << vpSSLTarget::minP() << ", " << vpSSLTarget::maxP() << "], got " << formatNumber(lm.p);
     return {"p", os.str()};
   }
   if (existing.size() >= vpSSLTarget::maxLandmarks()) {
