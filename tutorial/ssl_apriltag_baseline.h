@@ -25,6 +25,7 @@
 #include <visp3/detection/vpDetectorAprilTag.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 
 namespace sslbench {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -361,7 +362,7 @@ inline std::vector<VispBenchmarkResult> runOnVispBenchmark(const std::string &di
   if (!vpIoTools::checkFilename(imageName))
     throw vpException(vpException::ioError, "%s: cannot read the image", imageName.c_str());
   vpImage<unsigned char> I;
-  vpImageIo::read(I, imageName);
+  vpSSLImageIo::read(I, imageName);
   vpCameraParameters cam;
   cam.initPersProjWithoutDistortion(700., 700., 320., 240.);
   std::vector<VispBenchmarkResult> results;

@@ -170,6 +170,8 @@ expect 2 "h.txt:2: centre: each coordinate must be within" "$gen" --target h.txt
 printf 'name t\nsheet 100 100 0 0\nlandmark A 0 0 0 0.1\n' >s100.txt
 expect 2 "the PNG holds 1 to 32767 px a side" "$gen" --target s100.txt --output g
 [ ! -e g.pdf ] || fail "a rejected target wrote g.pdf"
+# 17. The simulator's --background image goes through the same checked reader.
+expect 2 "vpSSLBackground: cannot read image t.png: t.png: PNG data truncated" "$sim" --output s5 --background t.png --frames 1
 # 18. "+-0.1" is not a number.
 printf 'name t\nlandmark A +-0.1 0 0 0.1\n' >pm.txt
 expect 2 "pm.txt:2: x: not a number: \"\+-0.1\"" "$gen" --target pm.txt --output g
