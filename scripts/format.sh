@@ -24,7 +24,7 @@ esac
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   mapfile -t files < <(git ls-files --cached --others --exclude-standard -- '*.cpp' '*.h' '*.hpp' | sort -u)
 else
-  mapfile -t files < <(find modules servo tutorial test benchmark example -name '*.cpp' -o -name '*.h' -o -name '*.hpp' 2>/dev/null | sort)
+  mapfile -t files < <(find modules servo tutorial test benchmark example fuzz -name '*.cpp' -o -name '*.h' -o -name '*.hpp' 2>/dev/null | sort)
 fi
 # A file listed by git but deleted from the work tree is not ours to format.
 existing=()

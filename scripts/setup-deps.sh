@@ -25,6 +25,8 @@ packages=(
   # Formatting check, python3 for the end-to-end scripts' JSON and CSV checks, doxygen for the API reference
   # (Doxyfile; built and checked for warnings by scripts/test.sh).
   clang-format python3 doxygen
+  # libFuzzer targets (fuzz/, scripts/fuzz.sh): clang 14 and its runtime (libFuzzer, sanitizers).
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -262,6 +262,7 @@ TEST_F(TargetFileTest, SaveLoadRoundTripIsIdentical)
   a.radius = 0.1 / 3.;
   a.p = 0.6;
   b.name = "Bee";
+  b.p = 0.6;
   b.x = -0.123456789012345;
   b.y = 0.3;
   b.radius = 0.05;
@@ -277,10 +278,12 @@ TEST_F(TargetFileTest, SaveLoadRoundTripIsIdentical)
 
 TEST_F(TargetFileTest, OmittedPIsHalfAndOmittedSheetIsBoundingBoxPlusLargestRadius)
 {
-  vpSSLTarget t = vpSSLTarget::load(write("name t\nlandmark A 0 0 0 0.1\nlandmark B 0.3 0.1 0 0.05 0.4\n"));
+  vpSSLTarget t = vpSSLTarget::load(write("name t\nlandmark A 0 0 0 0.1\nlandmark B 0.3 0.1 0 0.05 0.5\n"));
   EXPECT_DOUBLE_EQ(t.getLandmark(0).p, 0.5);
-  EXPECT_DOUBLE_EQ(t.getLandmark(1).p, 0.4);
-  EXPECT_THROW(t.getP(), vpException); // different p
+  EXPECT_DOUBLE_EQ(t.getLandmark(1).p, 0.5);
+  EXPECT_DOUBLE_EQ(t.getP(), 0.5);
+  // Landmarks of one target share p (the detector matches one square wave): a different one is an error.
+  EXPECT_THROW(vpSSLTarget::load(write("name t\nlandmark A 0 0 0 0.1\nlandmark B 0.3 0.1 0 0.05 0.4\n")), vpException);
   // Discs span x in [-0.1, 0.35], y in [-0.1, 0.15]; margin 0.1 on each side.
   EXPECT_NEAR(t.getSheetWidth(), 0.65, 1e-12);
   EXPECT_NEAR(t.getSheetHeight(), 0.45, 1e-12);
@@ -355,11 +358,11 @@ TEST_F(TargetFileTest, DuplicateLandmarkName)
   EXPECT_NE(m.find("t.txt:5: name: duplicate landmark name \"B\" (line 4)"), std::string::npos) << m;
 }
 
-TEST_F(TargetFileTest, POutsideZeroOne)
+TEST_F(TargetFileTest, POutsideItsRange)
 {
-  for (const char *p : {"1", "0", "1.5", "-0.5"}) {
+  for (const char *p : {"1", "0", "1.5", "-0.5", "0.1", "0.99999999"}) {
     std::string m = loadError(kHeader + "landmark B 0 0 0 0.1 " + p + "\n");
-    EXPECT_NE(m.find("t.txt:4: p: must be in (0, 1)"), std::string::npos) << m;
+    EXPECT_NE(m.find("t.txt:4: p: must be in [0.2, 0.8]"), std::string::npos) << m;
   }
 }
 

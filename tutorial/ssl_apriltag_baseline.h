@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include <visp3/detection/vpDetectorAprilTag.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 
 namespace sslbench {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -259,22 +261,19 @@ struct Stats
   */
   double range90(double binWidth = 0.5, double minRate = 0.9) const
   {
-    std::vector<size_t> n, d;
+    // Only the bins that hold frames, in order: one far range (1e13 m) must not allocate a bin per 0.5 m.
+    std::map<double, std::pair<size_t, size_t>> bins; // bin index -> (frames, detected)
     for (size_t i = 0; i < detectedRange.size(); ++i) {
       if (!std::isfinite(detectedRange[i]) || detectedRange[i] < 0.)
         continue;
-      const size_t k = static_cast<size_t>(std::floor(detectedRange[i] / binWidth));
-      if (k >= n.size()) {
-        n.resize(k + 1, 0);
-        d.resize(k + 1, 0);
-      }
-      ++n[k];
-      d[k] += detectedFlag[i];
+      std::pair<size_t, size_t> &b = bins[std::floor(detectedRange[i] / binWidth)];
+      ++b.first;
+      b.second += detectedFlag[i];
     }
     double best = kNaN;
-    for (size_t k = 0; k < n.size(); ++k)
-      if (n[k] > 0 && static_cast<double>(d[k]) >= minRate * static_cast<double>(n[k]) - 1e-12)
-        best = static_cast<double>(k + 1) * binWidth;
+    for (const auto &kv : bins)
+      if (static_cast<double>(kv.second.second) >= minRate * static_cast<double>(kv.second.first) - 1e-12)
+        best = (kv.first + 1.) * binWidth;
     return best;
   }
 
@@ -370,7 +369,7 @@ inline std::vector<VispBenchmarkResult> runOnVispBenchmark(const std::string &di
   if (!vpIoTools::checkFilename(imageName))
     throw vpException(vpException::ioError, "%s: cannot read the image", imageName.c_str());
   vpImage<unsigned char> I;
-  vpImageIo::read(I, imageName);
+  vpSSLImageIo::read(I, imageName);
   vpCameraParameters cam;
   cam.initPersProjWithoutDistortion(700., 700., 320., 240.);
   std::vector<VispBenchmarkResult> results;

@@ -37,6 +37,7 @@
 #include <visp3/ssl/vpSSLWaterModel.h>
 
 #include "ssl_apriltag_baseline.h"
+#include "ssl_tutorial_common.h"
 
 namespace sslservo {
 
@@ -60,13 +61,12 @@ inline double parseDouble(const std::string &name, const std::string &text)
 //! The integer \e text in [minimum, maximum], value of option \e name. \exception UsageError otherwise.
 inline long parseInteger(const std::string &name, const std::string &text, long minimum, long maximum)
 {
-  char *end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < minimum || v > maximum) {
-    throw UsageError{name + ": expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
-                     "], got \"" + text + "\""};
+  // The tutorials' one integer parser (ssl_tutorial_common.h), with this header's error type.
+  try {
+    return static_cast<long>(ssltut::parseInteger(name, text, minimum, maximum));
+  } catch (const ssltut::UsageError &e) {
+    throw UsageError{e.what()};
   }
-  return v;
 }
 
 //! How the target is found at each step.

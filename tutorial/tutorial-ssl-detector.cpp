@@ -11,12 +11,13 @@
 #include <visp3/core/vpImageDraw.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpPixelMeterConversion.h>
-#include <visp3/gui/vpDisplayX.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/io/vpVideoReader.h>
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
+
+#include "ssl_tutorial_common.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [options]
@@ -24,8 +25,10 @@ const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [o
 Detects circular self-similar landmarks (SSL) and identifies the target in each image.
 
 Options:
-  --input PATH        An image file, or a numbered sequence as a vpVideoReader pattern
-                      (e.g. images/%06d.png). Required.
+  --input PATH        An image file (PNG, JPEG, PGM/PPM, BMP; at most 16384 px a side and
+                      2^26 pixels, doc/input-limits.md), or a numbered sequence as a pattern
+                      with one %d (e.g. images/%06d.png): from the first number found in
+                      0..100000 to the first missing one. Required.
   --camera FILE       Camera parameters (ViSP XML, vpXmlParserCamera). Enables cMo (the best
                       P3P pose hypothesis when the target's three landmarks are seen, paper
                       Sec. 3.2) and range_m (|t| of that pose, else Eq. 6 from the radii).
@@ -34,22 +37,30 @@ Options:
   --json              Print one JSON object per image on standard output (JSON Lines,
                       doc/detection-json.md); everything else goes to stderr.
   --output DIR        Write annotated images DIR/<image name>.png (default when no window
-                      is shown: ssl-detections). Outlines: B green, S1 cyan, S2 purple,
-                      landmarks outside the target orange; red crosses at the centres.
-  --display           Show the detections in a window (needs an X display).
-  --window W          Window length of the matching function, in [2, 128] (default 40).
+                      is shown: ssl-detections; DIR must not be an existing file).
+                      Outlines: B green, S1 cyan, S2 purple, landmarks outside the target
+                      orange; red crosses at the centres.
+  --display           Show the detections in a window (needs an X display; without one, a
+                      one-line notice and the annotated images are written instead).
+  --window W          Window length of the matching function, an integer in [2, 128]
+                      (default 40).
   --small-landmarks   Small-landmark mode: matches on the image upsampled 2x with w = 20, so
                       landmarks down to ~8 px radius are seen (the default sees ~25 px and up;
                       about twice the matching time). Use it for targets at range.
   --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.12).
   --no-normalize      Switch brightness normalisation off (on by default, paper Fig. 13).
-  --threads N         Worker threads for the matching function (default 0: all cores).
-  --max-frames N      Stop after N frames of a sequence (default: all).
+  --threads N         Worker threads for the matching function, 0 to 256 (default 0: all
+                      cores).
+  --max-frames N      Stop after N frames of a sequence, 0 to 1000000000 (default: all).
   --help              This help.
 
-Exit status: 0 when every image was read, 1 when an image could not be read (the others
-are still processed), 2 on a bad option, camera file or target file.
+Exit status: 0 when every image was read and every annotated image written, 1 when an
+image could not be read or an annotated image not written (the others are still
+processed) or on any other runtime failure, 2 on a bad option, camera file, target file or
+output folder. Every error is one line on stderr.
 )";
+
+const char *kProgram = "tutorial-ssl-detector";
 
 std::string jsonString(const std::string &s)
 {
@@ -187,9 +198,19 @@ void annotate(const vpImage<unsigned char> &I, vpSSLDetector &detector, vpImage<
   std::cerr << "tutorial-ssl-detector: " << msg << std::endl;
   std::exit(code);
 }
-} // namespace
 
-int main(int argc, char **argv)
+// The first frame number of a numbered pattern (ViSP's vpVideoReader looks as far), or -1.
+long firstFrame(const std::string &pattern)
+{
+  for (long i = 0; i <= 100000; ++i) {
+    if (vpIoTools::checkFilename(ssltut::expandPattern(pattern, i))) {
+      return i;
+    }
+  }
+  return -1;
+}
+
+int run(int argc, char **argv)
 {
   std::string input, cameraFile, cameraName = "Camera", targetName = "ssl3-a3", outputDir;
   bool json = false, display = false, normalize = true, smallLandmarks = false;
@@ -204,13 +225,9 @@ int main(int argc, char **argv)
       }
       return argv[++i];
     };
-    auto number = [&](const std::string &v) {
-      char *end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !std::isfinite(x)) {
-        fail("option " + a + ": not a number: \"" + v + "\"", 2);
-      }
-      return x;
+    auto number = [&](const std::string &v) { return ssltut::parseNumber("option " + a, v); };
+    auto integer = [&](const std::string &v, long long lo, long long hi) {
+      return ssltut::parseInteger("option " + a, v, lo, hi);
     };
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
@@ -230,7 +247,7 @@ int main(int argc, char **argv)
     } else if (a == "--display") {
       display = true;
     } else if (a == "--window") {
-      window = static_cast<unsigned int>(number(value()));
+      window = static_cast<unsigned int>(integer(value(), 2, 128));
     } else if (a == "--threshold") {
       threshold = number(value());
     } else if (a == "--small-landmarks") {
@@ -238,9 +255,9 @@ int main(int argc, char **argv)
     } else if (a == "--no-normalize") {
       normalize = false;
     } else if (a == "--threads") {
-      threads = static_cast<unsigned int>(number(value()));
+      threads = static_cast<unsigned int>(integer(value(), 0, 256));
     } else if (a == "--max-frames") {
-      maxFrames = static_cast<long>(number(value()));
+      maxFrames = static_cast<long>(integer(value(), 0, 1000000000));
     } else {
       fail("unknown option \"" + a + "\" (see --help)", 2);
     }
@@ -248,8 +265,35 @@ int main(int argc, char **argv)
   if (input.empty()) {
     fail("--input is required (see --help)", 2);
   }
+  const bool isSequence = input.find('%') != std::string::npos;
+  if (isSequence) {
+    ssltut::checkPattern("--input", input);
+  }
+  vpImage<vpRGBa> annotated;
+  std::unique_ptr<vpDisplay> window_;
+  if (display) {
+    // The window is opened on a placeholder now, so that a missing X server is told before any work.
+    annotated.resize(480, 640, vpRGBa(0));
+    window_ = ssltut::openDisplay(annotated, kProgram, kProgram,
+                                  "writing annotated images instead (--output, default ssl-detections)");
+    display = window_ != nullptr;
+  }
   if (!display && outputDir.empty()) {
     outputDir = "ssl-detections";
+  }
+  // Nothing a user gave is overwritten: an existing file is not turned into a folder, nor written into.
+  if (!outputDir.empty()) {
+    if (vpIoTools::checkFilename(outputDir) && !vpIoTools::checkDirectory(outputDir)) {
+      fail("--output: " + outputDir + ": exists and is not a folder", 2);
+    }
+    try {
+      vpIoTools::makeDirectory(outputDir);
+    } catch (const vpException &e) {
+      fail("--output: " + outputDir + ": cannot create the folder: " + e.getStringMessage(), 2);
+    }
+    if (!vpIoTools::checkDirectory(outputDir)) {
+      fail("--output: " + outputDir + ": cannot create the folder", 2);
+    }
   }
 
   // Everything the user gave is checked before the detector exists, so that an error exits cleanly.
@@ -275,49 +319,43 @@ int main(int argc, char **argv)
   detector.setSmallLandmarkMode(smallLandmarks);
   detector.setBrightnessNormalization(normalize);
   detector.setNbThreads(threads);
-  if (!outputDir.empty()) {
-    vpIoTools::makeDirectory(outputDir);
-  }
 
-  const bool isSequence = input.find('%') != std::string::npos;
-  vpVideoReader reader;
   vpImage<unsigned char> I;
-  vpImage<vpRGBa> annotated;
-  vpDisplay *window_ = nullptr;
   int status = 0;
-  long frame = 0, nbFound = 0;
+  long frame = 0, nbFound = 0, nbWritten = 0;
+  long index = 0;
   if (isSequence) {
-    try {
-      reader.setFileName(input);
-      reader.open(I); // reads the first frame; acquire() below starts from it again
-    } catch (const vpException &e) {
-      std::cerr << "tutorial-ssl-detector: " << input << ": cannot open sequence: " << e.getStringMessage()
+    index = firstFrame(input);
+    if (index < 0) {
+      std::cerr << "tutorial-ssl-detector: " << input << ": cannot open sequence: no file for any number in 0..100000"
                 << std::endl;
       return 1;
     }
   }
   for (bool done = false; !done; ++frame) {
-    std::string name;
+    std::string name, path = input;
     if (isSequence) {
-      if (reader.end() || (maxFrames >= 0 && frame >= maxFrames)) {
+      path = ssltut::expandPattern(input, index++);
+      if (!vpIoTools::checkFilename(path) || (maxFrames >= 0 && frame >= maxFrames)) {
         break;
       }
-      reader.acquire(I);
-      name = vpIoTools::getName(reader.getFrameName());
     } else {
       done = true;
-      name = vpIoTools::getName(input);
-      try {
-        vpImageIo::read(I, input);
-      } catch (const vpException &) {
-        const std::string why = "cannot read image";
-        std::cerr << "tutorial-ssl-detector: " << input << ": " << why << std::endl;
-        if (json) {
-          std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(why) << "}" << std::endl;
-        }
-        status = 1;
-        break;
+    }
+    name = vpIoTools::getName(path);
+    // vpSSLImageIo checks the header's size before decoding and says why an image cannot be read (ViSP's PNG
+    // reader trusts the header and leaks on a corrupt file).
+    try {
+      vpSSLImageIo::read(I, path);
+      vpSSLImageIo::check(I, name.c_str());
+    } catch (const vpException &e) {
+      std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
+      if (json) {
+        std::cout << "{\"image\": " << jsonString(name) << ", \"error\": " << jsonString(e.getStringMessage()) << "}"
+                  << std::endl;
       }
+      status = 1;
+      continue;
     }
     try {
       detector.detect(I);
@@ -336,16 +374,28 @@ int main(int argc, char **argv)
     }
     annotate(I, detector, annotated);
     if (display) {
-      if (window_ == nullptr) {
-        window_ = new vpDisplayX(annotated, vpDisplay::SCALE_AUTO);
-        vpDisplay::setTitle(annotated, "tutorial-ssl-detector");
+      // The window was opened on a placeholder: it follows the image's size.
+      if (window_->getWidth() != annotated.getWidth() || window_->getHeight() != annotated.getHeight()) {
+        window_.reset(new vpDisplayX(annotated, vpDisplay::SCALE_AUTO));
+        vpDisplay::setTitle(annotated, kProgram);
       }
       vpDisplay::display(annotated);
       vpDisplay::flush(annotated);
     }
     if (!outputDir.empty()) {
       const std::string base = name.substr(0, name.find_last_of('.'));
-      vpImageIo::write(annotated, outputDir + "/" + base + ".png");
+      const std::string out = outputDir + "/" + base + ".png";
+      try {
+        if (vpIoTools::checkDirectory(out)) {
+          throw vpException(vpException::ioError, "is a folder");
+        }
+        vpImageIo::write(annotated, out);
+        ++nbWritten;
+      } catch (const vpException &e) {
+        std::cerr << "tutorial-ssl-detector: " << out << ": cannot write the annotated image: " << e.getStringMessage()
+                  << std::endl;
+        status = 1;
+      }
     }
     if (!json) {
       std::cerr << name << ": " << detector.getLandmarks().size() << " landmark(s), target "
@@ -356,7 +406,18 @@ int main(int argc, char **argv)
     }
   }
   std::cerr << "tutorial-ssl-detector: " << frame << " image(s), target found in " << nbFound
-            << (outputDir.empty() ? "" : ", annotated images in " + outputDir + "/") << std::endl;
-  delete window_;
+            << (outputDir.empty() ? "" : ", " + std::to_string(nbWritten) + " annotated image(s) in " + outputDir + "/")
+            << std::endl;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "tutorial-ssl-detector: standard output: write error" << std::endl;
+    status = 1;
+  }
   return status;
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  return ssltut::guardedMain(kProgram, [&] { return run(argc, argv); });
 }

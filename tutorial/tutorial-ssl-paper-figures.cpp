@@ -26,6 +26,8 @@
 
 #include "ssl_apriltag_baseline.h"
 
+#include "ssl_tutorial_common.h"
+
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-paper-figures [options]
 
@@ -56,7 +58,8 @@ Options:
   --help             This help.
 
 Exit status: 0 on success, 2 on a bad option or input (one line on stderr), 1 when a run
-fails or an output file cannot be written.
+fails or an output file cannot be written whole, or on any other runtime failure (one line
+on stderr).
 )";
 
 [[noreturn]] void fail(const std::string &msg, int code)
@@ -406,7 +409,7 @@ void table1(bool quick, std::ostream &md)
 }
 } // namespace
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
   std::string dir = "ssl-paper-figures";
   std::string sequence = std::string(VISP_SSL_DATA_DIR) + "/sequences/approach-clear";
@@ -451,7 +454,17 @@ int main(int argc, char **argv)
   std::cout << md.str();
   std::ofstream out(dir + "/figures.md");
   out << md.str();
-  if (!out)
-    fail(dir + "/figures.md: cannot write", 1);
+  try {
+    ssltut::finishStream(out, dir + "/figures.md");
+    ssltut::finishStream(std::cout, "standard output");
+  } catch (const vpException &e) {
+    fail(e.getStringMessage(), 1);
+  }
   return 0;
+}
+
+int main(int argc, char **argv)
+{
+  // No exception reaches main's caller: one line on stderr and status 1 (2 for a bad option).
+  return ssltut::guardedMain("tutorial-ssl-paper-figures", [&] { return run(argc, argv); });
 }

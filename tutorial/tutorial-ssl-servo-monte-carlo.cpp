@@ -30,6 +30,8 @@
 
 #include "ssl_servo_loop.h"
 
+#include "ssl_tutorial_common.h"
+
 namespace {
 using sslservo::parseDouble;
 using sslservo::parseInteger;
@@ -60,6 +62,9 @@ Options:
   --small              320 x 240 camera (fast, but ssl3-a3 is then too small to be detected beyond about 3 m).
   --quiet              No progress on stderr.
   --help               This help.
+
+Exit status: 0 on success, 2 on a bad option (one line on stderr), 1 when a run fails or an
+output file cannot be written whole, or on any other runtime failure (one line on stderr).
 runs.csv columns: run, method, water, seed, start_distance, lateral, heading_deg, depth_offset, current_speed,
 current_dir_deg, stand_off, start_range, docked, time_to_dock, standoff_rms, settled_steps, first_detection,
 collisions_outside_dock, lost_events, final_state, sim_time.
@@ -327,7 +332,7 @@ std::string summaryLine(const std::string &method, const std::string &water, con
 }
 } // namespace
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
   Options opt;
   try {
@@ -479,4 +484,10 @@ int main(int argc, char **argv)
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;
+}
+
+int main(int argc, char **argv)
+{
+  // No exception reaches main's caller: one line on stderr and status 1 (2 for a bad option).
+  return ssltut::guardedMain("tutorial-ssl-servo-monte-carlo", [&] { return run(argc, argv); });
 }

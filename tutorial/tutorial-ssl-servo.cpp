@@ -19,6 +19,8 @@
 
 #include "ssl_servo_loop.h"
 
+#include "ssl_tutorial_common.h"
+
 namespace {
 using sslservo::parseDouble;
 using sslservo::parseInteger;
@@ -42,6 +44,9 @@ Options:
   --supersampling N    Renderer sub-pixels per axis (default 1).
   --quiet              No progress on stderr.
   --help               This help.
+
+Exit status: 0 on success, 2 on a bad option (one line on stderr), 1 when a run fails or an
+output file cannot be written whole, or on any other runtime failure (one line on stderr).
 CSV columns: t, state, nb_points, est_range, true_range, yaw_rate_demand, yaw_rate, heading_deg, depth,
 lateral (vehicle y minus target y, world, m), target_y, collision, y_rel_est and y_rel_true (target centre's
 starboard position in the vehicle frame, measured and true, m; empty when the target is not measured).
@@ -136,7 +141,7 @@ std::string num(double x, int digits)
 
 using sslservo::Row;
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
   Options opt;
   try {
@@ -280,4 +285,10 @@ int main(int argc, char **argv)
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;
+}
+
+int main(int argc, char **argv)
+{
+  // No exception reaches main's caller: one line on stderr and status 1 (2 for a bad option).
+  return ssltut::guardedMain("tutorial-ssl-servo", [&] { return run(argc, argv); });
 }

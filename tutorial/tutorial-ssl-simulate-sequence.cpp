@@ -24,6 +24,8 @@
 #include <visp3/ssl/vpSSLSequenceWriter.h>
 #include <visp3/ssl/vpSSLWaterModel.h>
 
+#include "ssl_tutorial_common.h"
+
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-simulate-sequence --output DIR [options]
 
@@ -50,16 +52,22 @@ Options:
   --fps F               Frames per second (default 10).
   --ranges A,B          Camera-to-target range at the first and last frames (m), replacing the
                         scenario's.
-  --seed S              Seed of the sensor noise, odometry and seabed (default 1).
+  --seed S              Seed of the sensor noise, odometry and seabed, an integer in
+                        [-2147483647, 2147483647] (default 1).
   --background B        What is behind the target (default water): water (open water), seabed
                         (procedural sea floor), klimt or solvay (a photograph from
                         visp-images-data on a wall behind the target), or an image file.
-  --supersampling N     Sub-pixels per axis of the renderer (default 4: 16 rays per pixel).
+  --supersampling N     Sub-pixels per axis of the renderer, 1 to 16 (default 4: 16 rays per
+                        pixel).
   --colour              Write colour images (default grey, as the detector reads them).
   --help                This help.
 
+Inputs are bounded (doc/input-limits.md): camera image at most 16384 px a side and 2^26
+pixels, target files as in doc/target-file.md.
+
 Progress goes to stderr; a summary line to stdout. Exit status: 0 on success, 2 on a bad
-option or input (one line on stderr, nothing written), 1 when rendering or writing fails.
+option or input (one line on stderr, nothing written), 1 when rendering or writing fails
+(a full device included) or on any other runtime failure.
 )";
 
 std::string listing(const std::vector<std::string> &names, bool scenarios)
@@ -136,7 +144,7 @@ vpCameraParameters readCamera(const std::string &what, unsigned int &width, unsi
 }
 } // namespace
 
-int main(int argc, char **argv)
+static int run(int argc, char **argv)
 {
   std::string output, scenarioName = "approach", waterName = "clear", cameraName = "default", targetName = "ssl3-a3";
   std::string backgroundName = "water";
@@ -198,15 +206,12 @@ int main(int argc, char **argv)
         endRange = toNumber(arg, v.substr(comma + 1));
         ranges = true;
       } else if (arg == "--seed") {
-        const double s = toNumber(arg, value());
-        if (s != std::floor(s) || std::fabs(s) > 1e15) {
-          throw vpException(vpException::badValue, "--seed: expected a whole number");
-        }
-        seed = static_cast<long>(s);
+        // The frames' seeds are seed * 1000003 + index: a seed within 32 bits keeps them inside a long.
+        seed = static_cast<long>(ssltut::parseInteger(arg, value(), -2147483647LL, 2147483647LL));
       } else if (arg == "--background") {
         backgroundName = value();
       } else if (arg == "--supersampling") {
-        supersampling = toCount(arg, value());
+        supersampling = static_cast<unsigned int>(ssltut::parseInteger(arg, value(), 1, 16));
       } else if (arg == "--colour" || arg == "--color") {
         colour = true;
       } else {
@@ -228,6 +233,9 @@ int main(int argc, char **argv)
     background = vpSSLBackground::fromName(backgroundName, seed);
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-simulate-sequence: " << e.getStringMessage() << std::endl;
+    return 2;
+  } catch (const ssltut::UsageError &e) {
+    std::cerr << "tutorial-ssl-simulate-sequence: " << e.what() << std::endl;
     return 2;
   }
   std::error_code ec;
@@ -307,7 +315,9 @@ int main(int argc, char **argv)
     const size_t close = json.rfind('}');
     json = json.substr(0, json.find_last_not_of(" \n", close - 1) + 1) + sim.str() + "\n}\n";
     vpSSLSequenceInfo::fromJson(json); // still a valid sequence.json
-    std::ofstream(output + "/sequence.json") << json;
+    std::ofstream jsonFile(output + "/sequence.json");
+    jsonFile << json;
+    ssltut::finishStream(jsonFile, output + "/sequence.json");
 
     const std::vector<vpSSLScenarioFrame> frames = scenario.generate();
     const unsigned int step = nbFrames >= 20 ? nbFrames / 10 : nbFrames + 1;
@@ -369,5 +379,15 @@ int main(int argc, char **argv)
               "ms/frame)\n",
               nbFrames, nbWithTruth, scenario.getName().c_str(), water.getName().c_str(), output.c_str(), elapsed,
               1000. * elapsed / nbFrames);
+  std::fflush(stdout);
+  if (std::ferror(stdout)) {
+    std::cerr << "tutorial-ssl-simulate-sequence: standard output: write error" << std::endl;
+    return EXIT_FAILURE;
+  }
   return EXIT_SUCCESS;
+}
+
+int main(int argc, char **argv)
+{
+  return ssltut::guardedMain("tutorial-ssl-simulate-sequence", [&] { return run(argc, argv); });
 }

@@ -59,15 +59,17 @@ void printHelp(const char *prog)
             << "                         Default: ssl3-a3.\n"
             << "  --output PREFIX        output files PREFIX.pdf, PREFIX.svg, PREFIX.png.\n"
             << "                         Default: the target's name (ssl3-a3), or ssl-linear with --linear.\n"
-            << "  --dpi N                resolution of the PNG in dots per inch, 10 to 600. Default: 150.\n"
+            << "  --dpi N                resolution of the PNG in dots per inch, 10 to 600; the PNG holds 1 to\n"
+            << "                         32767 px a side and at most 2^27 px. Default: 150.\n"
             << "  --linear               draw instead the original linear landmark of Briggs et al. (paper Fig. 1a):\n"
             << "                         the square wave along X, constant along Y, 200 mm x 100 mm, A4 landscape.\n"
             << "                         Cannot be combined with --target.\n"
             << "  --min-ring-mm X        rings (or stripes) thinner than X mm are not drawn; the centre then has the\n"
             << "                         colour of the innermost ring drawn. Default: 0.1 (about a printer's dot).\n"
             << "  --help                 print this help and exit.\n\n"
-            << "Exit status: 0 on success, 2 on a bad option or target file (nothing written), 1 when an output\n"
-            << "cannot be written (one line on stderr).\n\n"
+            << "Exit status: 0 on success, 2 on a bad option or target file (nothing written; limits in\n"
+            << "doc/target-file.md), 1 when an output cannot be written or on any other runtime failure (one\n"
+            << "line on stderr).\n\n"
             << "Sheet coordinates are the target frame: X right, Y down, seen from the printed side.\n"
             << "The name, radii and scale bar go where the sheet has room; a label that fits nowhere is left out\n"
             << "with a warning on stderr.\n";
@@ -237,23 +239,27 @@ bool isFree(const Page &page, const Rect &r)
 void layout(cairo_t *cr, Page &page)
 {
   const Rect &s = page.sheet;
-  const double step = 2 * kMm;
+  // A 2 mm grid, coarser on a sheet over 2 m so that the scan stays within 1000 x 1000 places (a 100 m sheet
+  // at 2 mm took 37 s and 4 GB); the places are visited, not stored.
+  const double step = std::max(2 * kMm, std::max(s.x1 - s.x0, s.y1 - s.y0) / 1000.);
   for (Block &b : page.blocks) {
     measure(cr, b);
     double xl = s.x0 + kEdgeMargin, xr = s.x1 - kEdgeMargin - b.w;
     double yt = s.y0 + kEdgeMargin, yb = s.y1 - kEdgeMargin - b.h;
-    std::vector<std::pair<double, double>> candidates = {{xl, yt}, {xl, yb}, {xr, yt}, {xr, yb}};
-    for (double y = yt; y <= yb; y += step) {
-      for (double x = xl; x <= xr; x += step) {
-        candidates.emplace_back(x, y);
-      }
-    }
-    for (const std::pair<double, double> &c : candidates) {
-      if (isFree(page, Rect{c.first, c.second, c.first + b.w, c.second + b.h})) {
-        b.x = c.first;
-        b.y = c.second;
+    auto tryPlace = [&](double x, double y) {
+      if (isFree(page, Rect{x, y, x + b.w, y + b.h})) {
+        b.x = x;
+        b.y = y;
         b.placed = true;
-        break;
+      }
+      return b.placed;
+    };
+    if (!tryPlace(xl, yt) && !tryPlace(xl, yb) && !tryPlace(xr, yt) && !tryPlace(xr, yb)) {
+      const int nx = xr >= xl ? static_cast<int>(std::floor((xr - xl) / step)) : -1;
+      const int ny = yb >= yt ? static_cast<int>(std::floor((yb - yt) / step)) : -1;
+      for (int j = 0; j <= ny && !b.placed; ++j) {
+        for (int i = 0; i <= nx && !tryPlace(xl + i * step, yt + j * step); ++i) {
+        }
       }
     }
     if (!b.placed) {
@@ -454,11 +460,28 @@ void writeVector(const Page &page, const std::string &filename, bool pdf)
   finish(s, cr, filename);
 }
 
+// The PNG's size at dpi. Cairo's image surfaces hold 1 to 32767 pixels a side (beyond, "cannot write: invalid
+// value"), and the surface takes 4 bytes a pixel: 2^27 pixels (512 MB) holds an A2 sheet at 600 dpi.
+void pngSize(const Page &page, int dpi, int &width, int &height)
+{
+  const double pxPerMetre = dpi / 0.0254;
+  const double w = std::round((page.sheet.x1 - page.sheet.x0) * pxPerMetre);
+  const double h = std::round((page.sheet.y1 - page.sheet.y0) * pxPerMetre);
+  if (!(w >= 1. && h >= 1. && w <= 32767. && h <= 32767. && w * h <= 134217728.)) {
+    std::ostringstream os;
+    os << "the sheet (" << (page.sheet.x1 - page.sheet.x0) / kMm << " x " << (page.sheet.y1 - page.sheet.y0) / kMm
+       << " mm) is " << w << " x " << h << " px at " << dpi
+       << " dpi; the PNG holds 1 to 32767 px a side and at most 2^27 px: change --dpi or the sheet";
+    throw std::runtime_error(os.str());
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+}
+
 void writePng(const Page &page, const std::string &filename, int dpi, int &width, int &height)
 {
   const double pxPerMetre = dpi / 0.0254;
-  width = static_cast<int>(std::lround((page.sheet.x1 - page.sheet.x0) * pxPerMetre));
-  height = static_cast<int>(std::lround((page.sheet.y1 - page.sheet.y0) * pxPerMetre));
+  pngSize(page, dpi, width, height);
   cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   cairo_t *cr = createContext(s);
   // The rounded pixel size may exceed the sheet by a fraction of a pixel: no black (unset) border.
@@ -549,6 +572,8 @@ int main(int argc, char **argv)
         return 0;
       }
       page = makePage(opt);
+      int pw = 0, ph = 0;
+      pngSize(page, opt.dpi, pw, ph); // before anything is written
     } catch (const vpException &e) {
       std::cerr << "error: " << e.getStringMessage() << std::endl;
       return 2; // a bad target file: nothing written
@@ -589,6 +614,14 @@ int main(int argc, char **argv)
     return 1;
   } catch (const std::exception &e) {
     std::cerr << "error: " << e.what() << std::endl;
+    return 1;
+  } catch (...) {
+    std::cerr << "error: unknown error" << std::endl;
+    return 1;
+  }
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "error: standard output: write error" << std::endl;
     return 1;
   }
   return 0;

@@ -17,10 +17,11 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpThetaUVector.h>
-#include <visp3/gui/vpDisplayX.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+
+#include "ssl_tutorial_common.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-tracker --sequence DIR [options]
@@ -47,14 +48,17 @@ Options:
                         circles from the estimated pose (green tracking, yellow acquired, red lost),
                         the target frame axes, detected centres (cyan crosses), regions of
                         interest (blue), the state.
-  --display             Show the annotated images in a window (needs an X display).
+  --display             Show the annotated images in a window (needs an X display; without one,
+                        a one-line notice and the annotated images go to DIR of --output-dir,
+                        default ssl-tracker).
   --no-odometry         Ignore the odometry columns (random-walk prediction).
   --small-landmarks M   Detector scale: auto (default, vpSSLTracker's switch from the predicted
                         radii), on (always the small-landmark mode) or off (never).
   --particles N         Particles of the filter, 1 to 1000000 (default 1000).
-  --seed S              Seed of the particle filter (default 1).
-  --full-search N       Full-image search at least every N frames while tracking (default 10).
-  --max-frames N        Stop after N frames (default: all).
+  --seed S              Seed of the particle filter, 0 to 2147483647 (default 1).
+  --full-search N       Full-image search at least every N frames while tracking, 0 to 1000000
+                        (default 10).
+  --max-frames N        Stop after N frames, 0 to 1000000000 (default: all).
   --quiet               No per-frame lines.
   --summary             After the run, print a Markdown table per range band (0-1, 1-2, 2-4, 4-8,
                         8+ m, from the ground truth): frames, then for the single-frame pose and
@@ -63,9 +67,13 @@ Options:
                         in the CSV (doc/benchmarks.md).
   --help                This help.
 
-Exit status: 0 on success, 1 when the sequence cannot be read (an error in the middle of it
-stops the run; the frames before it are in the CSV), 2 on a bad option.
+Exit status: 0 on success, 1 when the sequence cannot be read or is out of the limits of
+doc/input-limits.md (an error in the middle of it stops the run; the frames before it are in
+the CSV), when the CSV or an annotated image cannot be written whole (a full device) or on any
+other runtime failure, 2 on a bad option. Every error is one line on stderr.
 )";
+
+const char *kProgram = "tutorial-ssl-tracker";
 
 [[noreturn]] void fail(const std::string &msg, int code)
 {
@@ -169,9 +177,7 @@ void drawTarget(vpImage<vpRGBa> &out, const vpSSLTarget &target, const vpHomogen
     }
   }
 }
-} // namespace
-
-int main(int argc, char **argv)
+int run(int argc, char **argv)
 {
   bool csvSet = false;
   std::string sequence, csvPath, outputDir, smallMode = "auto";
@@ -186,13 +192,8 @@ int main(int argc, char **argv)
       }
       return argv[++i];
     };
-    auto count = [&](const std::string &v) {
-      char *end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !std::isfinite(x) || x < 0. || x != std::floor(x) || x > 1e9) {
-        fail("option " + a + ": not a whole number >= 0: \"" + v + "\"", 2);
-      }
-      return static_cast<long>(x);
+    auto count = [&](const std::string &v, long long maximum) {
+      return static_cast<long>(ssltut::parseInteger("option " + a, v, 0, maximum));
     };
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
@@ -214,17 +215,17 @@ int main(int argc, char **argv)
         fail("option --small-landmarks: expected auto, on or off, got \"" + smallMode + "\"", 2);
       }
     } else if (a == "--particles") {
-      const long n = count(value());
-      if (n < 1 || n > 1000000) {
+      const long n = count(value(), 1000000);
+      if (n < 1) {
         fail("option --particles: expected 1 to 1000000 particles, got " + std::to_string(n), 2);
       }
       particles = static_cast<unsigned int>(n);
     } else if (a == "--seed") {
-      seed = count(value());
+      seed = count(value(), 2147483647);
     } else if (a == "--full-search") {
-      fullSearch = static_cast<unsigned int>(count(value()));
+      fullSearch = static_cast<unsigned int>(count(value(), 1000000));
     } else if (a == "--max-frames") {
-      maxFrames = count(value());
+      maxFrames = count(value(), 1000000000);
     } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "--summary") {
@@ -239,20 +240,35 @@ int main(int argc, char **argv)
   if (csvSet && csvPath.empty()) {
     fail("option --csv: empty file name", 2);
   }
+  vpImage<vpRGBa> annotated;
+  std::unique_ptr<vpDisplay> window;
+  if (display) {
+    // Opened on a placeholder now, so that a missing X server is told before any work.
+    annotated.resize(480, 640, vpRGBa(0));
+    window = ssltut::openDisplay(annotated, kProgram, kProgram,
+                                 "writing annotated images instead (--output-dir, default ssl-tracker)");
+    display = window != nullptr;
+    if (!display && outputDir.empty()) {
+      outputDir = "ssl-tracker";
+    }
+  }
   if (!csvSet && !outputDir.empty()) {
     csvPath = outputDir + "/ssl-tracker.csv"; // beside the annotated images, never over a file in the current folder
   }
 
   vpSSLSequenceReader reader;
   vpSSLTarget target;
+  std::unique_ptr<vpSSLTracker> trackerPtr;
   try {
     reader.open(sequence);
-    target = vpSSLTarget::fromName(reader.getInfo().target);
+    // A relative target path is the sequence folder's, as in every tool (vpSSLSequenceReader::getTargetPath()).
+    target = vpSSLTarget::fromName(reader.getTargetPath());
+    trackerPtr.reset(new vpSSLTracker(target, reader.getCameraParameters(), vpHomogeneousMatrix(reader.getInfo().vMc)));
   } catch (const vpException &e) {
     fail(sequence + ": " + e.getStringMessage(), 1);
   }
   const vpCameraParameters &cam = reader.getCameraParameters();
-  vpSSLTracker tracker(target, cam, vpHomogeneousMatrix(reader.getInfo().vMc));
+  vpSSLTracker &tracker = *trackerPtr;
   try {
     tracker.getFilter().setNbParticles(particles);
     tracker.setSeed(seed);
@@ -296,8 +312,6 @@ int main(int argc, char **argv)
 
   vpSSLSequenceFrame frame;
   vpImage<unsigned char> I;
-  vpImage<vpRGBa> annotated;
-  vpDisplay *window = nullptr;
   const vpFont font(16, vpFont::GENERIC_MONOSPACE);
   const vpColVector origin({0., 0., 0., 1.});
   long nbFrames = 0, nbTracking = 0;
@@ -317,8 +331,15 @@ int main(int argc, char **argv)
       break;
     }
     ++nbFrames;
-    const vpSSLTrackerState state =
-        (useOdometry && frame.hasOdometry) ? tracker.track(I, vpHomogeneousMatrix(frame.oMv)) : tracker.track(I);
+    vpSSLTrackerState state = SSL_TRACKER_SEARCHING;
+    try {
+      state = (useOdometry && frame.hasOdometry) ? tracker.track(I, vpHomogeneousMatrix(frame.oMv)) : tracker.track(I);
+    } catch (const vpException &e) {
+      // The rows before it stay in the CSV, which is closed below.
+      std::cerr << "tutorial-ssl-tracker: " << reader.getImagePath() << ": " << e.getStringMessage() << std::endl;
+      status = 1;
+      break;
+    }
     nbTracking += state == SSL_TRACKER_TRACKING ? 1 : 0;
     const bool hasPose = tracker.hasPose();
     const vpHomogeneousMatrix cMo = tracker.getPose();
@@ -421,22 +442,37 @@ int main(int argc, char **argv)
         char name[32];
         std::snprintf(name, sizeof(name), "/%06u.png", frame.index);
         try {
+          if (vpIoTools::checkDirectory(outputDir + name)) {
+            throw vpException(vpException::ioError, "is a folder");
+          }
           vpImageIo::write(annotated, outputDir + name);
         } catch (const vpException &e) {
-          fail(outputDir + name + ": cannot write: " + e.getStringMessage(), 2);
+          // Stops the run, but the CSV rows so far are kept (closed below).
+          std::cerr << "tutorial-ssl-tracker: " << outputDir + name << ": cannot write: " << e.getStringMessage()
+                    << std::endl;
+          status = 1;
+          break;
         }
       }
       if (display) {
-        if (window == nullptr) {
-          window = new vpDisplayX(annotated, vpDisplay::SCALE_AUTO);
-          vpDisplay::setTitle(annotated, "tutorial-ssl-tracker");
+        if (window->getWidth() != annotated.getWidth() || window->getHeight() != annotated.getHeight()) {
+          window.reset(new vpDisplayX(annotated, vpDisplay::SCALE_AUTO));
+          vpDisplay::setTitle(annotated, kProgram);
         }
         vpDisplay::display(annotated);
         vpDisplay::flush(annotated);
       }
     }
   }
-  csv.flush();
+  // A CSV that could not be written whole (a full device) is an error, not a success with rows missing.
+  try {
+    if (!csvPath.empty()) {
+      ssltut::finishStream(csv, csvToStdout ? std::string("standard output") : csvPath);
+    }
+  } catch (const vpException &e) {
+    std::cerr << "tutorial-ssl-tracker: " << e.getStringMessage() << std::endl;
+    status = 1;
+  }
   std::cerr << "tutorial-ssl-tracker: " << nbFrames << " frame(s), tracking in " << nbTracking
             << (csvToStdout || csvPath.empty() ? std::string() : ", CSV in " + csvPath)
             << (outputDir.empty() ? std::string() : ", annotated images in " + outputDir + "/") << std::endl;
@@ -454,6 +490,16 @@ int main(int argc, char **argv)
           << stat(trackerBands[b].position, 1000., 1) << " | " << stat(trackerBands[b].angle, 1., 2) << " |\n";
     }
   }
-  delete window;
+  log.flush();
+  if (!log) {
+    std::cerr << "tutorial-ssl-tracker: standard output: write error" << std::endl;
+    status = 1;
+  }
   return status;
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  return ssltut::guardedMain(kProgram, [&] { return run(argc, argv); });
 }

@@ -23,6 +23,7 @@
 #include <visp3/ssl/vpSSLTracker.h>
 
 #include "ssl_apriltag_baseline.h"
+#include "ssl_tutorial_common.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-vs-apriltag [options] SEQUENCE_DIR [SEQUENCE_DIR ...]
@@ -50,9 +51,11 @@ and DIR/pose_error_vs_range.png (one line per method and water preset).
 
 Options:
   --output-dir DIR      Where to write the files (default: ssl-vs-apriltag).
-  --max-frames N        Use at most the first N frames of each sequence (default: all).
-  --bin W               Range bin of the plots and of range90 (m, default 0.5).
-  --apriltag-decimate D AprilTag quad decimate (default 1; 2 is ViSP's default, faster, shorter range).
+  --max-frames N        Use at most the first N frames of each sequence, 1 to 1000000000
+                        (default: all).
+  --bin W               Range bin of the plots and of range90 (m, 0.01 to 100, default 0.5).
+  --apriltag-decimate D AprilTag quad decimate, 1 to 16 (default 1; 2 is ViSP's default, faster,
+                        shorter range; the AprilTag library crashes from 240 on).
   --progress            Always show the progress bar on stderr (default: only on a terminal).
   --quiet               Never show it.
   --check-visp-benchmark DIR
@@ -61,9 +64,17 @@ Options:
                         truth cMo_<id>.txt) and print its pose error per tag.
   --help                This help.
 
+Ranges (the frames.csv range column, else |t| of the ground truth) beyond 1000 m are an
+input error: the bins of range90 and of the plots stop there.
+
 Exit status: 0 on success, 2 on a bad option or input (one line on stderr), 1 when a run
-fails or an output file cannot be written.
+fails or an output file cannot be written whole (a full device), or on any other runtime
+failure.
 )";
+
+const char *kProgram = "tutorial-ssl-vs-apriltag";
+//! Farthest range (m) a frame may have: the benchmark's bins stop there.
+const double kMaxRange = 1000.;
 
 [[noreturn]] void fail(const std::string &msg, int code)
 {
@@ -71,13 +82,14 @@ fails or an output file cannot be written.
   std::exit(code);
 }
 
-double parseNumber(const std::string &opt, const std::string &v, double min)
+double parseNumber(const std::string &opt, const std::string &v, double min, double max)
 {
   char *end = nullptr;
   const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(x) || x < min) {
+  if (v.empty() || *end != '\0' || !std::isfinite(x) || x < min || x > max ||
+      (v.size() > 1 && (v[0] == '+' || v[0] == '-') && (v[1] == '+' || v[1] == '-'))) {
     std::ostringstream os;
-    os << opt << ": expected a number >= " << min << ", got \"" << v << "\"";
+    os << opt << ": expected a number in [" << min << ", " << max << "], got \"" << v << "\"";
     fail(os.str(), 2);
   }
   return x;
@@ -235,11 +247,8 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
     baseline->setQuadDecimate(opt.decimate);
   } else {
     res.method = "SSL";
-    std::string t = info.target;
-    // A target file path is relative to the sequence folder when it is not found as given.
-    if (!vpIoTools::checkFilename(t) && vpIoTools::checkFilename(folder + "/" + t))
-      t = folder + "/" + t;
-    target = vpSSLTarget::fromName(t);
+    // A relative target path is the sequence folder's, as in every tool (vpSSLSequenceReader::getTargetPath()).
+    target = vpSSLTarget::fromName(reader.getTargetPath());
     tracker.reset(new vpSSLTracker(target, cam, vpHomogeneousMatrix(info.vMc)));
     tracker->setSeed(1);
   }
@@ -256,6 +265,12 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
     r.range = extraNumber(f, "range");
     if (!std::isfinite(r.range) && f.hasGroundTruth)
       r.range = vpHomogeneousMatrix(f.cMo).getTranslationVector().frobeniusNorm();
+    if (std::isfinite(r.range) && std::fabs(r.range) > kMaxRange) {
+      std::ostringstream os;
+      os << folder << "/frames.csv: frame " << f.index << ": range: " << r.range << " m, beyond the " << kMaxRange
+         << " m the benchmark bins";
+      throw vpException(vpException::badValue, os.str());
+    }
     auto w = f.extras.find("water");
     r.water = (w != f.extras.end() && !w->second.empty()) ? w->second : water;
     const vpHomogeneousMatrix truth(f.cMo);
@@ -403,7 +418,7 @@ void addPlots(const std::map<std::string, sslbench::Stats> &byMethodWater, doubl
   for (const auto &kv : byMethodWater)
     for (double r : kv.second.detectedRange)
       if (std::isfinite(r))
-        maxRange = std::max(maxRange, r);
+        maxRange = std::max(maxRange, std::min(r, kMaxRange));
   maxRange = std::ceil(maxRange / bin) * bin;
   vpSSLPlot rate("Detection rate vs range", "range (m)", "detection rate");
   vpSSLPlot pos("Position error vs range (median of detected frames)", "range (m)", "position error (m)");
@@ -424,9 +439,7 @@ void addPlots(const std::map<std::string, sslbench::Stats> &byMethodWater, doubl
   rate.save(dir + "/rate_vs_range.png", 640, 360);
   vpSSLPlot::saveStacked({pos, ang}, dir + "/pose_error_vs_range.png", 640, 240);
 }
-} // namespace
-
-int main(int argc, char **argv)
+int run(int argc, char **argv)
 {
   Options opt;
   std::string vispDir;
@@ -443,11 +456,12 @@ int main(int argc, char **argv)
     } else if (arg == "--output-dir") {
       opt.outputDir = value();
     } else if (arg == "--max-frames") {
-      opt.maxFrames = static_cast<size_t>(parseNumber(arg, value(), 1.));
+      opt.maxFrames = static_cast<size_t>(ssltut::parseInteger(arg, value(), 1, 1000000000));
     } else if (arg == "--bin") {
-      opt.bin = parseNumber(arg, value(), 0.01);
+      opt.bin = parseNumber(arg, value(), 0.01, 100.);
     } else if (arg == "--apriltag-decimate") {
-      opt.decimate = static_cast<float>(parseNumber(arg, value(), 1.));
+      // AprilTag's decimation crashes (SEGV) from 240 on; 16 is already coarser than any use.
+      opt.decimate = static_cast<float>(parseNumber(arg, value(), 1., 16.));
     } else if (arg == "--progress") {
       opt.progress = 1;
     } else if (arg == "--quiet") {
@@ -497,6 +511,8 @@ int main(int argc, char **argv)
     } catch (const vpException &e) {
       if (progress.shown())
         std::cerr << std::endl; // end the progress bar's line
+      // The rows of the sequences before are kept.
+      framesCsv.close();
       const std::string msg = e.getStringMessage();
       fail(msg.find(s) == std::string::npos ? s + ": " + msg : msg, 2);
     }
@@ -558,12 +574,25 @@ int main(int argc, char **argv)
   for (const auto &kv : byMethodWater)
     summaryCsvRow(summary, "all", kv.first.substr(0, kv.first.find(' ')), kv.first.substr(kv.first.find(' ') + 1),
                   kv.second);
-  if (!report || !summary || !framesCsv)
-    fail(opt.outputDir + ": cannot write the report files", 1);
+  // Checked after flushing and closing: a full device fails there, not at the first write.
+  try {
+    ssltut::finishStream(report, opt.outputDir + "/report.md");
+    ssltut::finishStream(summary, opt.outputDir + "/summary.csv");
+    ssltut::finishStream(framesCsv, opt.outputDir + "/frames.csv");
+    ssltut::finishStream(std::cout, "standard output");
+  } catch (const vpException &e) {
+    fail(e.getStringMessage(), 1);
+  }
   try {
     addPlots(byMethodWater, opt.bin, opt.outputDir);
   } catch (const vpException &e) {
     fail(e.getStringMessage(), 1);
   }
   return 0;
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  return ssltut::guardedMain(kProgram, [&] { return run(argc, argv); });
 }

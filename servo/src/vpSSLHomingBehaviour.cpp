@@ -40,6 +40,15 @@ void vpSSLHomingBehaviour::setStandOff(double Zstar)
   m_standOff = Zstar;
 }
 
+namespace {
+// Search pattern bounds (setSearchPattern()): a vehicle's yaw rate, the deepest ocean, a day, a gain far above
+// any tuning.
+const double kMaxSearchYawRate = 10.;
+const double kMaxSearchDepth = 11000.;
+const double kMaxSearchPeriod = 86400.;
+const double kMaxSearchDepthGain = 100.;
+} // namespace
+
 void vpSSLHomingBehaviour::setSearchPattern(double yawRate, double depthMin, double depthMax, double period,
                                             double depthGain)
 {
@@ -49,6 +58,17 @@ void vpSSLHomingBehaviour::setSearchPattern(double yawRate, double depthMin, dou
                       "vpSSLHomingBehaviour::setSearchPattern: yawRate %g, depthMin %g, depthMax %g, period %g, "
                       "depthGain %g: need finite values, depthMin <= depthMax, period > 0 and depthGain > 0",
                       yawRate, depthMin, depthMax, period, depthGain);
+  }
+  // Bounds that keep the depth reference (the mean and half the span of the two depths) and the heave command
+  // finite: +-1e308 m would make both infinite, and the saturation would turn that into a full heave.
+  if (std::fabs(yawRate) > kMaxSearchYawRate || std::fabs(depthMin) > kMaxSearchDepth ||
+      std::fabs(depthMax) > kMaxSearchDepth || period > kMaxSearchPeriod || depthGain > kMaxSearchDepthGain) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setSearchPattern: yawRate %g, depthMin %g, depthMax %g, period %g, "
+                      "depthGain %g: need |yawRate| <= %g rad/s, |depthMin|, |depthMax| <= %g m, period <= %g s and "
+                      "depthGain <= %g",
+                      yawRate, depthMin, depthMax, period, depthGain, kMaxSearchYawRate, kMaxSearchDepth,
+                      kMaxSearchPeriod, kMaxSearchDepthGain);
   }
   m_searchYawRate = yawRate;
   m_searchDepthMin = depthMin;

@@ -12,7 +12,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpUniRand.h>
-#include <visp3/io/vpImageIo.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
@@ -118,8 +118,10 @@ vpSSLBackground vpSSLBackground::fromName(const std::string &nameOrImage, long s
     }
     throw vpException(vpException::ioError, msg);
   }
+  // vpSSLImageIo checks the header's size before decoding (ViSP's PNG reader trusts it and leaks on a corrupt
+  // file): a user's --background image is as hostile as any input.
   try {
-    vpImageIo::read(b.m_texture, path);
+    vpSSLImageIo::read(b.m_texture, path);
   } catch (const vpException &e) {
     throw vpException(vpException::ioError, "vpSSLBackground: cannot read image %s: %s", path.c_str(), e.what());
   }

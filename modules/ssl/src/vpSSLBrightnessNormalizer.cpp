@@ -5,6 +5,8 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
+
 vpSSLBrightnessNormalizer::vpSSLBrightnessNormalizer() : m_low(1.), m_high(99.), m_maxGain(10.) {}
 
 void vpSSLBrightnessNormalizer::setPercentiles(double low, double high)
@@ -27,6 +29,7 @@ void vpSSLBrightnessNormalizer::setMaxGain(double gain)
 
 void vpSSLBrightnessNormalizer::apply(const vpImage<unsigned char> &I, vpImage<unsigned char> &O) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLBrightnessNormalizer::apply");
   O.resize(I.getHeight(), I.getWidth());
   const size_t n = static_cast<size_t>(I.getSize());
   if (n == 0) {
@@ -47,6 +50,8 @@ void vpSSLBrightnessNormalizer::computeLut(const vpImage<unsigned char> &I, unsi
   if (step == 0) {
     throw vpException(vpException::badValue, "vpSSLBrightnessNormalizer::computeLut: step must be >= 1");
   }
+  // The rows are read through I[v] and getWidth(): both must describe memory the image holds.
+  vpSSLImageCheck::kernel(I, "vpSSLBrightnessNormalizer::computeLut");
   // Four interleaved histograms: consecutive equal pixels (flat areas) would otherwise serialise on one counter.
   unsigned int hist4[4][256] = {{0}};
   const unsigned int W = I.getWidth(), H = I.getHeight();

@@ -8,6 +8,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 
+#include <visp3/ssl/vpSSLImageIo.h>
+
 #include "vpSSLLookupKernel.h"
 #include "vpSSLResampleKernel.h"
 
@@ -156,6 +158,9 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     m_message.clear();
     throw vpException(vpException::dimensionError, "vpSSLDetector::detect: empty image");
   }
+  // Width and height consistent with the buffer (in 64 bits) and within the documented limits: nothing is read
+  // past a buffer whose declared size wraps.
+  vpSSLImageIo::check(I, "vpSSLDetector::detect");
 
   // The rings are read on the camera's grey levels: the stretch that helps the matching function can
   // clip a dark background to the ink's black, and the outermost ring is told from the background by

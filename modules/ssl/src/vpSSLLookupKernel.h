@@ -10,6 +10,8 @@
 
 namespace vpSSLLookupKernel {
 //! dst[i] = lut[src[i]] for i in [0, n); src and dst may be the same array, but must not overlap otherwise.
+//! Sizes: any n (size_t); src and dst hold n bytes (the callers pass getSize() of an image checked by
+//! vpSSLImageCheck, whose 64-bit check guarantees that).
 void applyTable(const uint8_t lut[256], const uint8_t *src, uint8_t *dst, std::size_t n);
 } // namespace vpSSLLookupKernel
 

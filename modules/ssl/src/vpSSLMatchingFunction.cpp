@@ -5,6 +5,8 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
+
 namespace {
 const int kDu[4] = {1, -1, 0, 0};
 const int kDv[4] = {0, 0, 1, -1};
@@ -46,6 +48,7 @@ int vpSSLMatchingFunction::offsetP(unsigned int xi) const
 bool vpSSLMatchingFunction::evaluate(const vpImage<unsigned char> &I, int u, int v, vpSSLDirection d,
                                      unsigned int window, int &value) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::evaluate");
   const int du = kDu[d], dv = kDv[d];
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   const int ue = u + du * static_cast<int>(window), ve = v + dv * static_cast<int>(window);
@@ -67,6 +70,7 @@ bool vpSSLMatchingFunction::evaluate(const vpImage<unsigned char> &I, int u, int
 void vpSSLMatchingFunction::cumulative(const vpImage<unsigned char> &I, int u, int v, vpSSLDirection d,
                                        unsigned int maxWindow, std::vector<int> &S) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::cumulative");
   const int du = kDu[d], dv = kDv[d];
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   S.assign(1, 0);
@@ -93,6 +97,7 @@ void vpSSLMatchingFunction::cumulative(const vpImage<unsigned char> &I, int u, i
 
 void vpSSLMatchingFunction::computeReference(const vpImage<unsigned char> &I, vpImage<int> &M) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::computeReference");
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   M.resize(I.getHeight(), I.getWidth(), 0);
   for (int v = 0; v < H; ++v) {

@@ -14,6 +14,7 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
 #include "vpSSLMatchingKernel.h"
 #include "vpSSLMatchingKernelThreads.h"
 
@@ -227,6 +228,7 @@ void run(const vpSSLMatchingFunction &f, const vpImage<unsigned char> &I, vpImag
 
 void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, vpImage<int> &M) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::compute");
   M.resize(I.getHeight(), I.getWidth());
   if (I.getSize() == 0) {
     return;
@@ -245,6 +247,8 @@ void vpSSLMatchingFunction::compute(const vpImage<unsigned char> &I, const std::
 void vpSSLMatchingFunction::computeInside(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
                                           vpImage<int> &M) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::computeInside");
+  vpSSLImageCheck::consistent(M, "vpSSLMatchingFunction::computeInside: map");
   if (M.getHeight() != I.getHeight() || M.getWidth() != I.getWidth()) {
     M.resize(I.getHeight(), I.getWidth());
     std::fill(M.bitmap, M.bitmap + M.getSize(), 0);
@@ -255,6 +259,7 @@ void vpSSLMatchingFunction::computeInside(const vpImage<unsigned char> &I, const
 void vpSSLMatchingFunction::computeRegions(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois,
                                            vpImage<int> &M, bool clearOutside) const
 {
+  vpSSLImageCheck::kernel(I, "vpSSLMatchingFunction::compute");
   M.resize(I.getHeight(), I.getWidth());
   if (I.getSize() == 0) {
     return;

@@ -1,8 +1,11 @@
 /*
   Private interface of the SIMD matching kernel (paper Eq. 3 and 5), implemented with Google Highway in
-  vpSSLMatchingKernel.cpp and picked at run time for the CPU. No Highway type appears here so that the public
-  headers stay free of it: a program that includes them needs no Highway headers, and the kernel's targets
-  can change without breaking the library's ABI.
+  vpSSLMatchingKernel.cpp and picked at run time for the CPU. Sizes: width and height up to the kernels' bound
+  of vpSSLImageCheck (32768 a side, 2^28 pixels: int columns and rows, ptrdiff_t strides and offsets of the
+  padded copy, int32 map values), window w <= kMaxWindow (int16 sums); vpSSLMatchingFunction checks the image
+  before building Params. No Highway type appears here so that the public headers stay free of it: a program
+  that includes them needs no Highway headers, and the kernel's targets can change without breaking the
+  library's ABI.
 */
 #ifndef VP_SSL_MATCHING_KERNEL_H
 #define VP_SSL_MATCHING_KERNEL_H

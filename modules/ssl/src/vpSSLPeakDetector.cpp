@@ -5,6 +5,8 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
+
 #include "vpSSLPeakKernel.h"
 
 vpSSLPeakDetector::vpSSLPeakDetector() : m_threshold(0), m_minDistance(4), m_maxPeaks(64) {}
@@ -109,6 +111,7 @@ void vpSSLPeakDetector::scanRegion(const vpImage<int> &M, int u0, int v0, int u1
 
 void vpSSLPeakDetector::detect(const vpImage<int> &M, std::vector<vpSSLPeak> &peaks, const std::vector<vpRect> &rois)
 {
+  vpSSLImageCheck::kernel(M, "vpSSLPeakDetector::detect");
   peaks.clear();
   m_candidates.clear();
   if (rois.empty()) {

@@ -13,6 +13,8 @@ namespace vpSSLPeakKernel {
   strictly against the later neighbours (row[u + 1] and the row below) and loosely against the earlier ones: one
   pixel per plateau. \e above and \e below are the neighbouring rows, nullptr where the row is the map's first or
   last. Every column read, u0 - 1 to u1 + 1, must exist. Written to \e columns in increasing order.
+  Sizes: columns in int, the map within the kernels' bound of vpSSLImageCheck (vpSSLPeakDetector::detect()
+  checks it); \e columns holds u1 - u0 + 1 ints.
   \return their number.
 */
 int localMaxima(const int *above, const int *row, const int *below, int u0, int u1, int threshold, int *columns);

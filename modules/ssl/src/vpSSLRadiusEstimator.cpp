@@ -6,6 +6,8 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
+
 #include "vpSSLRadiusEstimatorInternal.h"
 #include "vpSSLRayKernel.h"
 
@@ -512,6 +514,10 @@ bool vpSSLRadiusEstimator::symmetricCentre(const vpImage<unsigned char> &I, doub
 
 bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
 {
+  vpSSLImageCheck::kernel(I, "vpSSLRadiusEstimator::estimate");
+  if (!std::isfinite(landmark.u) || !std::isfinite(landmark.v)) {
+    return false;
+  }
   double u = landmark.u, v = landmark.v, scale = 0.;
   m_rayImage = nullptr; // the image may have changed in place since the last call
   if (!symmetricCentre(I, u, v)) {
@@ -549,6 +555,10 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
 bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark,
                                     const vpSSLLandmark &prior)
 {
+  vpSSLImageCheck::kernel(I, "vpSSLRadiusEstimator::estimate");
+  if (!std::isfinite(landmark.u) || !std::isfinite(landmark.v)) {
+    return false;
+  }
   if (!(prior.radius > 0. && prior.minorRadius > 0.)) {
     return estimate(I, landmark);
   }

@@ -4,6 +4,8 @@
   Google Highway in vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of the scalar code they
   replace, bit for bit (the same double operations in the same order, compiled without contraction into fused
   multiply-adds): test_ring_kernels.
+  Sizes: width and height in int, within the kernels' bound of vpSSLImageCheck (vpSSLRadiusEstimator::estimate()
+  checks the image), every sample inside the image.
 */
 #ifndef VP_SSL_RAY_KERNEL_H
 #define VP_SSL_RAY_KERNEL_H

@@ -71,11 +71,19 @@ void UpsampleRowImpl(const uint8_t *top, const uint8_t *bottom, int wTop, int wi
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
+#include <visp3/core/vpException.h>
+
 namespace vpSSLResampleKernel {
 HWY_EXPORT(UpsampleRowImpl);
 
 void upsampleRow(const uint8_t *top, const uint8_t *bottom, int wTop, int width, uint8_t *out)
 {
+  if (width > kMaxWidth) {
+    throw vpException(vpException::dimensionError,
+                      "vpSSLResampleKernel::upsampleRow: %d px, beyond the %d px a row "
+                      "may have",
+                      width, kMaxWidth);
+  }
   HWY_DYNAMIC_DISPATCH(UpsampleRowImpl)(top, bottom, wTop, width, out);
 }
 } // namespace vpSSLResampleKernel

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -318,8 +319,11 @@ std::string quote(const std::string &s)
 }
 } // namespace
 
-vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &text, const std::string &filename)
+vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &textIn, const std::string &filename)
 {
+  // A UTF-8 byte order mark (spreadsheets and some editors write one) is skipped, as in frames.csv; the spans
+  // kept below ("water") index the text without it.
+  const std::string text = textIn.compare(0, 3, "\xEF\xBB\xBF") == 0 ? textIn.substr(3) : textIn;
   JsonParser parser(text, filename);
   JsonValue root = parser.parseDocument();
   if (root.kind != JsonValue::Object)
@@ -346,6 +350,13 @@ vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &text, const std
   for (unsigned int i = 0; i < 6; ++i) {
     if (vMc.items[i].kind != JsonValue::Number)
       parser.fail("camera_to_vehicle: element " + std::to_string(i + 1) + " is not a number", vMc.items[i].line);
+    const double bound = i < 3 ? maxMountTranslation() : maxMountRotation();
+    if (std::fabs(vMc.items[i].number) > bound) {
+      std::ostringstream os;
+      os << "camera_to_vehicle: element " << i + 1 << " is " << vMc.items[i].number << ", beyond +-" << bound
+         << (i < 3 ? " m" : " rad");
+      parser.fail(os.str(), vMc.items[i].line);
+    }
     info.vMc[i] = vMc.items[i].number;
   }
 
@@ -364,9 +375,19 @@ vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &text, const std
 
 vpSSLSequenceInfo vpSSLSequenceInfo::load(const std::string &filename)
 {
+  std::error_code ec;
+  if (std::filesystem::is_directory(filename, ec))
+    throw vpException(vpException::ioError, filename + ": is a folder, not a file");
   std::ifstream in(filename, std::ios::binary);
   if (!in)
     throw vpException(vpException::ioError, filename + ": missing or unreadable");
+  // sequence.json is a few hundred bytes: a large file is not one, and is not read whole into memory.
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size > static_cast<std::streamoff>(maxFileSize()))
+    throw vpException(vpException::badValue, filename + ": " + std::to_string(size) + " bytes, more than the " +
+                                                 std::to_string(maxFileSize()) + " a sequence.json may have");
+  in.seekg(0);
   std::ostringstream text;
   text << in.rdbuf();
   return fromJson(text.str(), filename);

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include <visp3/core/vpException.h>
-#include <visp3/io/vpImageIo.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 
 namespace fs = std::filesystem;
 
@@ -80,17 +80,35 @@ template <typename Read> bool sticky(std::string &error, Read read)
   }
 }
 
-// Locale-independent, whole-cell, finite number; an empty string means "ok".
-std::string parseNumber(const std::string &cell, double &value)
+// Locale-independent, whole-cell, finite number within +-bound; an empty string means "ok".
+std::string parseNumber(const std::string &cell, double &value, double bound, const char *unit)
 {
   std::string s = trim(cell);
   const char *b = s.data(), *e = s.data() + s.size();
-  if (b != e && *b == '+')
+  if (b != e && *b == '+') {
     ++b;
+    // from_chars takes a sign of its own: "+-0.1" is not a number.
+    if (b != e && (*b == '-' || *b == '+'))
+      return "not a number: \"" + cell + "\"";
+  }
   auto r = std::from_chars(b, e, value);
   if (s.empty() || r.ec != std::errc() || r.ptr != e || !std::isfinite(value))
     return "not a number: \"" + cell + "\"";
+  if (std::fabs(value) > bound) {
+    std::ostringstream os;
+    os << s << " is beyond +-" << bound << " " << unit;
+    return os.str();
+  }
   return std::string();
+}
+
+// Lines ending in CR alone (classic Mac OS) read as one line holding every row.
+void checkLineEnd(const std::string &line, const std::string &where)
+{
+  if (line.find('\r') != std::string::npos)
+    throw vpException(vpException::badValue, where + "a carriage return inside the line: lines must end in LF or "
+                                                     "CRLF, not CR alone (convert the file, e.g. with tr '\\r' "
+                                                     "'\\n')");
 }
 } // namespace
 
@@ -117,6 +135,21 @@ void vpSSLSequenceReader::open(const std::string &folder)
   m_ended = false;
   m_imagePath.clear();
   readHeader();
+}
+
+std::string vpSSLSequenceReader::getTargetPath() const
+{
+  const std::string &t = m_info.target;
+  if (t.empty() || fs::path(t).is_absolute())
+    return t;
+  const fs::path inFolder = fs::path(m_folder) / t;
+  std::error_code ec;
+  // A name (ssl3-a3, an AprilTag sheet) has no file of that name in the folder; a relative path always names
+  // one there, never one in the working folder.
+  if (fs::exists(inFolder, ec) || t.find('/') != std::string::npos || t.find('\\') != std::string::npos ||
+      (t.size() > 4 && t.compare(t.size() - 4, 4, ".txt") == 0))
+    return inFolder.string();
+  return t;
 }
 
 void vpSSLSequenceReader::close()
@@ -149,6 +182,7 @@ void vpSSLSequenceReader::readHeader()
     m_line.erase(0, 3);
   if (!m_line.empty() && m_line.back() == '\r')
     m_line.pop_back();
+  checkLineEnd(m_line, m_csvPath + ":1: ");
   if (!splitCsv(m_line, m_cells))
     throw vpException(vpException::badValue, m_csvPath + ":1: unterminated quote in the header");
   for (unsigned int i = 0; i < 14; ++i) {
@@ -193,6 +227,7 @@ bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
   ++m_lineNumber;
   if (!m_line.empty() && m_line.back() == '\r')
     m_line.pop_back();
+  checkLineEnd(m_line, where());
   if (m_line.empty()) {
     // Trailing empty lines end the table; an empty line followed by rows is a hole in it.
     unsigned int emptyLine = m_lineNumber;
@@ -229,7 +264,7 @@ bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
                                                  " (frames are numbered from 0 in row order)");
 
   double t = 0.;
-  std::string error = parseNumber(m_cells[1], t);
+  std::string error = parseNumber(m_cells[1], t, maxTime(), "s");
   if (!error.empty())
     throw vpException(vpException::badValue, where() + "t: " + error);
   if (m_rowIndex > 0 && !(t > m_lastTimeValue))
@@ -249,7 +284,9 @@ bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
                                                      std::to_string(6 - nEmpty) + " other " +
                                                      columnName(first).substr(0, columnName(first).find('_')) +
                                                      "_* cells are set (the 6 cells are all numbers or all empty)");
-      std::string err = parseNumber(m_cells[i], pose[static_cast<unsigned int>(i - first)]);
+      const bool translation = i < first + 3;
+      std::string err = parseNumber(m_cells[i], pose[static_cast<unsigned int>(i - first)],
+                                    translation ? maxTranslation() : maxRotation(), translation ? "m" : "rad");
       if (!err.empty())
         throw vpException(vpException::badValue, where() + columnName(i) + ": " + err);
     }
@@ -290,12 +327,12 @@ template <typename Type> bool vpSSLSequenceReader::nextWithImage(vpSSLSequenceFr
   if (!readRow(frame))
     return false;
   std::string line = "frames.csv:" + std::to_string(m_lineNumber);
+  // vpSSLImageIo checks the header's size before decoding, and its messages name the file.
   try {
-    vpImageIo::read(I, m_imagePath);
+    vpSSLImageIo::read(I, m_imagePath);
   } catch (const vpException &e) {
-    throw vpException(vpException::ioError,
-                      m_imagePath + ": cannot read the image (" + line + "): " + e.getStringMessage());
-  } catch (const std::exception &e) { // the OpenCV backend throws cv::Exception
+    throw vpException(vpException::ioError, e.getStringMessage() + " (" + line + ")");
+  } catch (const std::exception &e) {
     throw vpException(vpException::ioError, m_imagePath + ": cannot read the image (" + line + "): " + e.what());
   }
   if (I.getWidth() == 0 || I.getHeight() == 0)

@@ -235,6 +235,12 @@ bool centre(const vpImage<unsigned char> &I, int radius, const std::vector<int> 
   // whole pixels, so no interpolation is needed.
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   const int reach = kReach;
+  // Beyond kMaxRadius the 32-bit sums could overflow; a centre that is not finite, or beyond any image, has no
+  // integer half-pixel position (lround() of it is undefined).
+  if (radius < 1 || radius > kMaxRadius || !(std::fabs(u) < 1e9) || !(std::fabs(v) < 1e9)) {
+    asymmetry = 0.;
+    return false;
+  }
   const int cu = static_cast<int>(std::lround(2. * u)), cv = static_cast<int>(std::lround(2. * v));
   if (cu - reach < 2 * radius || cv - reach < 2 * radius || cu + reach > 2 * (W - 1 - radius) ||
       cv + reach > 2 * (H - 1 - radius)) {

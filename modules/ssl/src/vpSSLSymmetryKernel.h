@@ -1,7 +1,9 @@
 /*
   Private interface of the symmetry centring of a candidate (vpSSLRadiusEstimator): the half-pixel centre about
   which a disc best matches its half-turn. The sums of squared differences of the whole search window are
-  computed with Google Highway in vpSSLSymmetryKernel.cpp, picked at run time for the CPU.
+  computed with Google Highway in vpSSLSymmetryKernel.cpp, picked at run time for the CPU. Sizes: radius <= 144
+  (32-bit sums, see centre()), the image within the kernels' bound of vpSSLImageCheck (vpSSLRadiusEstimator checks
+  it).
 */
 #ifndef VP_SSL_SYMMETRY_KERNEL_H
 #define VP_SSL_SYMMETRY_KERNEL_H
@@ -15,6 +17,8 @@
 namespace vpSSLSymmetryKernel {
 //! Half pixels searched either way of the starting centre: a window of (2 kReach + 1)^2 half-pixel centres.
 const int kReach = 6;
+//! Largest disc radius centre() reads (px): half the disc times 255^2 stays below 2^31.
+const int kMaxRadius = 144;
 
 /*!
   Row extents of the half disc of \e radius that pairs every pixel of the disc with its half-turn once (dy > 0,
@@ -30,7 +34,8 @@ void halfDisc(int radius, std::vector<int> &spans);
   the variance is below \e flatVariance.
   \e spans comes from halfDisc(radius); \e buffer is scratch, kept between calls (no allocation once grown). The
   sums are 32-bit: \e radius up to 144 (half the disc times 255^2 below 2^31).
-  \return false (\e u, \e v unchanged, \e asymmetry 0) if the window comes too close to the border.
+  \return false (\e u, \e v unchanged, \e asymmetry 0) if the window comes too close to the border, \e radius is
+  not in [1, kMaxRadius] or the centre is not finite.
 */
 bool centre(const vpImage<unsigned char> &I, int radius, const std::vector<int> &spans, double flatVariance,
             std::vector<int16_t> &buffer, double &u, double &v, double &asymmetry);

@@ -60,19 +60,39 @@ std::pair<std::string, std::string> landmarkProblem(const vpSSLTargetLandmark &l
   if (!isValidName(lm.name)) {
     return {"name", "must be one word without blanks or '#', got " + quote(lm.name)};
   }
+  const double c = vpSSLTarget::maxCoordinate();
   if (!std::isfinite(lm.x) || !std::isfinite(lm.y) || !std::isfinite(lm.z)) {
     return {"centre", "must be finite"};
+  }
+  if (std::fabs(lm.x) > c || std::fabs(lm.y) > c || std::fabs(lm.z) > c) {
+    os << "each coordinate must be within +-" << c << " m, got (" << lm.x << ", " << lm.y << ", " << lm.z << ")";
+    return {"centre", os.str()};
   }
   if (!(lm.radius > 0.) || !std::isfinite(lm.radius)) {
     os << "must be > 0, got " << lm.radius;
     return {"radius", os.str()};
   }
-  if (!(lm.p > 0. && lm.p < 1.)) {
-    os << "must be in (0, 1), got " << lm.p;
+  if (lm.radius < vpSSLTarget::minRadius() || lm.radius > vpSSLTarget::maxRadius()) {
+    os << "must be in [" << vpSSLTarget::minRadius() << ", " << vpSSLTarget::maxRadius() << "] m, got "
+       << formatNumber(lm.radius);
+    return {"radius", os.str()};
+  }
+  if (!(lm.p >= vpSSLTarget::minP() && lm.p <= vpSSLTarget::maxP())) {
+    os << "must be in [" << vpSSLTarget::minP() << ", " << vpSSLTarget::maxP() << "], got " << formatNumber(lm.p);
     return {"p", os.str()};
+  }
+  if (existing.size() >= vpSSLTarget::maxLandmarks()) {
+    os << "more than " << vpSSLTarget::maxLandmarks() << " landmarks in one target";
+    return {"landmark", os.str()};
   }
   for (size_t i = 0; i < existing.size(); ++i) {
     const vpSSLTargetLandmark &o = existing[i];
+    // The detector matches one square wave: every landmark of a target shares its p.
+    if (lm.p != o.p) {
+      other = static_cast<int>(i);
+      os << lm.p << " differs from " << o.p << " of " << quote(o.name) << " (the landmarks of a target share one p)";
+      return {"p", os.str()};
+    }
     if (o.name == lm.name) {
       other = static_cast<int>(i);
       return {"name", "duplicate landmark name " + quote(lm.name)};
@@ -92,12 +112,19 @@ std::pair<std::string, std::string> landmarkProblem(const vpSSLTargetLandmark &l
 std::string sheetProblem(double width, double height, double cx, double cy)
 {
   std::ostringstream os;
+  const double side = vpSSLTarget::maxSheetSide(), c = vpSSLTarget::maxCoordinate();
   if (!(width > 0.) || !std::isfinite(width)) {
     os << "width: must be > 0, got " << width;
   } else if (!(height > 0.) || !std::isfinite(height)) {
     os << "height: must be > 0, got " << height;
+  } else if (width > side) {
+    os << "width: must be at most " << side << " m, got " << width;
+  } else if (height > side) {
+    os << "height: must be at most " << side << " m, got " << height;
   } else if (!std::isfinite(cx) || !std::isfinite(cy)) {
     os << "center: must be finite";
+  } else if (std::fabs(cx) > c || std::fabs(cy) > c) {
+    os << "center: each coordinate must be within +-" << c << " m";
   }
   return os.str();
 }
@@ -210,6 +237,10 @@ private:
     const char *b = tok.data(), *e = tok.data() + tok.size();
     if (b != e && *b == '+') {
       ++b;
+      // from_chars takes a '-' of its own: "+-0.1" would read as -0.1.
+      if (b != e && (*b == '-' || *b == '+')) {
+        fail(field, "not a number: " + quote(tok));
+      }
     }
     double v = 0.;
     std::from_chars_result r = std::from_chars(b, e, v);
@@ -250,6 +281,11 @@ private:
     }
     if (!(m_sheet[1] > 0.)) {
       fail("height", "must be > 0, got " + f[2]);
+    }
+    const std::string pb = sheetProblem(m_sheet[0], m_sheet[1], m_sheet[2], m_sheet[3]);
+    if (!pb.empty()) {
+      const size_t colon = pb.find(": ");
+      fail(pb.substr(0, colon), pb.substr(colon + 2));
     }
     m_sheetLine = m_line;
   }

@@ -13,6 +13,11 @@
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/core/vpThetaUVector.h>
 
+#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl/vpSSLSequenceInfo.h>
+
+#include "vpSSLImageCheck.h"
+
 namespace {
 bool isFinite(const vpHomogeneousMatrix &M)
 {
@@ -37,8 +42,14 @@ vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &
   if (!(cam.get_px() > 0.) || !(cam.get_py() > 0.)) {
     throw vpException(vpException::badValue, "vpSSLTracker: the camera needs positive px and py");
   }
+  // Infinite or absurd intrinsics (px = 1e300, u0 = NaN) would give NaN projections, regions and poses.
+  vpSSLCameraFile::check(cam, "vpSSLTracker: camera");
   if (!isFinite(vMc)) {
     throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle) is not finite");
+  }
+  const double t = vpSSLSequenceInfo::maxMountTranslation();
+  if (std::fabs(vMc[0][3]) > t || std::fabs(vMc[1][3]) > t || std::fabs(vMc[2][3]) > t) {
+    throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle): translation beyond +-%g m", t);
   }
   m_cMv = vMc.inverse();
   m_detector.setFullSearchPeriod(m_fullSearchPeriod);
@@ -188,6 +199,7 @@ vpSSLTrackerState vpSSLTracker::track(const vpImage<unsigned char> &I)
   if (I.getSize() == 0) {
     throw vpException(vpException::dimensionError, "vpSSLTracker::track: empty image");
   }
+  vpSSLImageCheck::input(I, "vpSSLTracker::track");
   m_odometryUsed = false;
   // The odometry reference is dropped: a later track() with odometry cannot know the motion in between.
   m_hasOdometry = false;
@@ -202,6 +214,7 @@ vpSSLTrackerState vpSSLTracker::track(const vpImage<unsigned char> &I, const vpH
   if (I.getSize() == 0) {
     throw vpException(vpException::dimensionError, "vpSSLTracker::track: empty image");
   }
+  vpSSLImageCheck::input(I, "vpSSLTracker::track");
   m_odometryUsed = false;
   const bool finite = isFinite(oMv);
   if (m_state != SSL_TRACKER_SEARCHING) {

@@ -89,7 +89,8 @@ public:
     Search pattern: yaw rate (rad/s, sign gives the direction, 0 allowed), depth oscillating between
     \e depthMin and \e depthMax (m, world depth, positive down) with period \e period (s); heave = depthGain
     (depth reference - depth), saturated by the law's heave limit.
-    \exception vpException if not finite, depthMin > depthMax, or period or depthGain not > 0.
+    \exception vpException if not finite, depthMin > depthMax, period or depthGain not > 0, or beyond the
+    bounds |yawRate| <= 10 rad/s, |depthMin|, |depthMax| <= 11000 m, period <= 86400 s, depthGain <= 100.
   */
   void setSearchPattern(double yawRate, double depthMin, double depthMax, double period, double depthGain = 0.5);
   //! Angle between the optical axis and the target centre below which ALIGN ends (rad, default 5 deg).

@@ -25,7 +25,11 @@
   \endcode
 
   \c water is optional and kept as raw JSON text, verbatim, so that the simulator's parameters survive a
-  read-write round trip whatever they are. Other members of the file are ignored.
+  read-write round trip whatever they are. Other members of the file are ignored. A UTF-8 byte order mark
+  at the start is skipped (as in frames.csv).
+
+  Limits (doc/input-limits.md): the file is at most maxFileSize() bytes; \c camera_to_vehicle's translation
+  within +-maxMountTranslation() m and its theta-u rotation within +-maxMountRotation() rad per element.
 
   \code
   vpSSLSequenceInfo info;
@@ -51,6 +55,13 @@ struct VISP_SSL_EXPORT vpSSLSequenceInfo
     required member (\c target, \c camera_to_vehicle, \c source) or wrong type.
   */
   static vpSSLSequenceInfo fromJson(const std::string &text, const std::string &filename = "sequence.json");
+
+  //! Largest sequence.json file read (bytes): 1 MiB.
+  static constexpr size_t maxFileSize() { return size_t(1) << 20; }
+  //! Largest |tx|, |ty|, |tz| of camera_to_vehicle (m): 100.
+  static constexpr double maxMountTranslation() { return 100.; }
+  //! Largest |tux|, |tuy|, |tuz| of camera_to_vehicle (rad): 2 pi.
+  static constexpr double maxMountRotation() { return 6.283185307179586; }
 
   /*!
     Reads a sequence.json file.

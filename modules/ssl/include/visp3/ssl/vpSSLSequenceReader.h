@@ -28,7 +28,11 @@
   constant memory.
 
   Everything read is checked: any problem throws one vpException naming the file, the line and the field,
-  for example <tt>frames.csv:17: gt_tz: not a number: "abc"</tt>. Problems in a row are reported when next()
+  for example <tt>frames.csv:17: gt_tz: not a number: "abc"</tt>. Limits (doc/input-limits.md): \c t within
+  +-maxTime() s, the translations of the odometry and the ground truth within +-maxTranslation() m, their
+  theta-u elements within +-maxRotation() rad; lines end in LF or CRLF (CR alone is an error); a UTF-8 byte
+  order mark before the header is skipped; images are read by vpSSLImageIo (its size limits, checked on the
+  file's header before decoding). Problems in a row are reported when next()
   reaches that row; after an error, next() throws the same error again until the next open().
 
   \code
@@ -88,6 +92,18 @@ public:
   unsigned int getImageHeight() const { return m_height; }
   //! Content of sequence.json.
   const vpSSLSequenceInfo &getInfo() const { return m_info; }
+  /*!
+    sequence.json's \c target for vpSSLTarget::fromName(): a relative path resolved against the sequence
+    folder (never the working folder), an absolute path or a built-in name as is. A target is taken as a
+    path when a file of that name is in the folder, or when it contains a '/' or ends in ".txt".
+  */
+  std::string getTargetPath() const;
+  //! Largest |t| in frames.csv (s): 1e9.
+  static constexpr double maxTime() { return 1e9; }
+  //! Largest |odom_t*|, |gt_t*| in frames.csv (m): 1e4.
+  static constexpr double maxTranslation() { return 1e4; }
+  //! Largest |odom_tu*|, |gt_tu*| in frames.csv (rad): 2 pi.
+  static constexpr double maxRotation() { return 6.283185307179586; }
   //! Names of the frames.csv columns after the 14 standard ones, in file order.
   const std::vector<std::string> &getExtraColumns() const { return m_extraColumns; }
   //! Path of the image of the last row read by next(), empty before the first.

@@ -47,10 +47,14 @@ struct VISP_SSL_EXPORT vpSSLTargetLandmark
   Target file rules (also in doc/target-file.md):
   - One statement per line, fields separated by blanks; '#' starts a comment; blank lines are ignored.
   - <tt>name NAME</tt>: required, once. Names (target and landmarks) are single words.
-  - <tt>landmark NAME X Y Z RADIUS [P]</tt>: at least one; names unique; RADIUS > 0; P in (0, 1).
-    P defaults to 0.5 (the paper's value) only when the field is omitted.
-  - <tt>sheet WIDTH HEIGHT CENTER_X CENTER_Y</tt>: optional, at most once. When omitted the sheet is
-    the bounding box of the landmark discs plus a margin of the largest radius on every side.
+  - <tt>landmark NAME X Y Z RADIUS [P]</tt>: at least one, at most maxLandmarks() (64); names unique;
+    RADIUS in [minRadius(), maxRadius()] = [0.001, 10] m; X, Y, Z within +-maxCoordinate() = 100 m; P in
+    [minP(), maxP()] = [0.2, 0.8] (which keeps the number of rings of a landmark bounded) and the same for
+    every landmark (the detector matches one square wave). P defaults to 0.5 (the paper's value) only when
+    the field is omitted.
+  - <tt>sheet WIDTH HEIGHT CENTER_X CENTER_Y</tt>: optional, at most once; WIDTH, HEIGHT in (0,
+    maxSheetSide()] = (0, 100] m, the centre within +-100 m. When omitted the sheet is the bounding box of
+    the landmark discs plus a margin of the largest radius on every side.
   - Landmarks may not overlap (centre distance in the sheet plane < sum of radii) and must fit on the
     sheet.
   - Any error throws vpException (vpException::ioError when the file cannot be read,
@@ -92,10 +96,30 @@ public:
   */
   void save(const std::string &filename) const;
 
-  //! Adds a landmark. \exception vpException if its radius or p is out of range or its name is taken.
+  /*!
+    Adds a landmark.
+    \exception vpException if its centre, radius or p is out of range, its p differs from the other
+    landmarks', it overlaps one, its name is taken or the target already has maxLandmarks().
+  */
   void addLandmark(const vpSSLTargetLandmark &landmark);
 
+  //! Most landmarks in one target: 64 (the identifier's hypotheses grow with the cube of the count).
+  static constexpr size_t maxLandmarks() { return 64; }
+  //! Smallest landmark radius (m): 0.001.
+  static constexpr double minRadius() { return 1e-3; }
+  //! Largest landmark radius (m): 10.
+  static constexpr double maxRadius() { return 10.; }
+  //! Largest |X|, |Y|, |Z| of a landmark centre, and of the sheet centre (m): 100.
+  static constexpr double maxCoordinate() { return 100.; }
+  //! Largest sheet width or height (m): 100.
+  static constexpr double maxSheetSide() { return 100.; }
+  //! Smallest similarity ratio p: 0.2.
+  static constexpr double minP() { return 0.2; }
+  //! Largest similarity ratio p: 0.8 (vpSSLRenderer draws log(1e-16) / log(p) rings: 166 at 0.8, 1.6e9 at 0.99999999).
+  static constexpr double maxP() { return 0.8; }
+
   //! Sets the printed sheet: size and centre of the rectangle in the target frame (m).
+  //! \exception vpException if a side is not in (0, maxSheetSide()] or the centre not within maxCoordinate().
   void setSheet(double width, double height, double centerX, double centerY);
 
   //! Sets the target's name.

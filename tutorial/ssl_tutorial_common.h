@@ -1,0 +1,201 @@
+/*!
+  \file ssl_tutorial_common.h
+  \brief Tutorial-local helpers every tutorial shares: strict option parsing, a top-level guard so that no
+  exception reaches main's caller, checked output streams, an X display that falls back to files, and numbered
+  image patterns. Header-only, like ssl_apriltag_baseline.h.
+*/
+#ifndef SSL_TUTORIAL_COMMON_H
+#define SSL_TUTORIAL_COMMON_H
+
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+
+#include <visp3/core/vpException.h>
+#include <visp3/core/vpImage.h>
+#include <visp3/gui/vpDisplayX.h>
+
+namespace ssltut {
+
+/*!
+  A bad command line or input: the tutorials print its message on one line and exit with status 2. Thrown by
+  the parsers below; a tutorial's guard (guardedMain()) turns it into that status wherever it is thrown.
+*/
+struct UsageError : std::runtime_error
+{
+  explicit UsageError(const std::string &message) : std::runtime_error(message) {}
+};
+
+/*!
+  The integer \e text in [minimum, maximum], value of option \e name: digits with an optional leading '-', nothing
+  else ("2.5", "1e15", " 3", "+-1" are not integers; 4294967298 is out of range, not wrapped to 2).
+  \exception UsageError naming the option, the text and the range.
+*/
+inline long long parseInteger(const std::string &name, const std::string &text, long long minimum, long long maximum)
+{
+  long long v = 0;
+  const char *b = text.data(), *e = text.data() + text.size();
+  const std::from_chars_result r = std::from_chars(b, e, v);
+  if (text.empty() || r.ec != std::errc() || r.ptr != e || v < minimum || v > maximum) {
+    throw UsageError(name + ": expected an integer in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+                     "], got \"" + text + "\"");
+  }
+  return v;
+}
+
+/*!
+  The finite number \e text in [minimum, maximum], value of option \e name (strtod syntax, the whole text; no
+  sign after a sign).
+  \exception UsageError otherwise.
+*/
+inline double parseNumber(const std::string &name, const std::string &text, double minimum = -HUGE_VAL,
+                          double maximum = HUGE_VAL)
+{
+  char *end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  const bool doubleSign = text.size() >= 2 && (text[0] == '+' || text[0] == '-') && (text[1] == '+' || text[1] == '-');
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || doubleSign ||
+      std::isspace(static_cast<unsigned char>(text[0]))) {
+    throw UsageError(name + ": not a number: \"" + text + "\"");
+  }
+  if (v < minimum || v > maximum) {
+    throw UsageError(name + ": expected a number in [" + std::to_string(minimum) + ", " + std::to_string(maximum) +
+                     "], got \"" + text + "\"");
+  }
+  return v;
+}
+
+/*!
+  Runs \e run (a tutorial's body) so that no exception reaches main's caller: a UsageError prints its message and
+  gives 2, any other exception (vpException, std::bad_alloc, cv::Exception, ...) prints one line and gives 1.
+  Every line starts with \e program.
+*/
+template <typename Run> int guardedMain(const char *program, Run run)
+{
+  try {
+    return run();
+  } catch (const UsageError &e) {
+    std::cerr << program << ": " << e.what() << std::endl;
+    return 2;
+  } catch (const vpException &e) {
+    std::cerr << program << ": " << e.getStringMessage() << std::endl;
+  } catch (const std::bad_alloc &) {
+    std::cerr << program << ": out of memory" << std::endl;
+  } catch (const std::exception &e) {
+    std::cerr << program << ": " << e.what() << std::endl;
+  } catch (...) {
+    std::cerr << program << ": unknown error" << std::endl;
+  }
+  return 1;
+}
+
+/*!
+  Flushes \e out and, for a file, closes it; throws when any write failed (a full device, a closed pipe), so
+  that a tool never reports success on a file it did not write whole.
+  \exception vpException (ioError) naming \e path.
+*/
+inline void finishStream(std::ostream &out, const std::string &path)
+{
+  out.flush();
+  if (std::ofstream *f = dynamic_cast<std::ofstream *>(&out)) {
+    if (f->is_open()) {
+      f->close();
+    }
+  }
+  if (!out) {
+    throw vpException(vpException::ioError, "%s: write error (device full or closed?)", path.c_str());
+  }
+}
+
+/*!
+  A window on \e I when an X display can be opened, else nullptr and a one-line notice on stderr (the caller
+  then writes files instead). vpDisplayX throws vpDisplayException without a server; DISPLAY unset is checked
+  first so that Xlib prints nothing of its own.
+*/
+inline std::unique_ptr<vpDisplay> openDisplay(vpImage<vpRGBa> &I, const char *program, const std::string &title,
+                                              const std::string &fallback)
+{
+  const char *display = std::getenv("DISPLAY");
+  if (display != nullptr && *display != '\0') {
+    try {
+      std::unique_ptr<vpDisplay> d(new vpDisplayX(I, vpDisplay::SCALE_AUTO));
+      vpDisplay::setTitle(I, title);
+      return d;
+    } catch (const vpException &) {
+    }
+  }
+  std::cerr << program << ": no X display (DISPLAY "
+            << (display != nullptr && *display != '\0' ? "cannot be opened" : "unset") << "): " << fallback
+            << std::endl;
+  return nullptr;
+}
+
+//! Longest path a numbered image pattern may expand to (bytes): ViSP's readers keep names in fixed buffers.
+constexpr size_t kMaxPathLength = 1024;
+
+/*!
+  Checks a numbered image pattern (e.g. images/%06d.png): exactly one conversion, %d with an optional 0 flag and
+  a width of at most 2 digits, and a path that stays below kMaxPathLength for any frame number.
+  \exception UsageError naming the option and the problem.
+*/
+inline void checkPattern(const std::string &option, const std::string &pattern)
+{
+  int conversions = 0;
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') {
+      continue;
+    }
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    size_t j = i + 1;
+    if (j < pattern.size() && pattern[j] == '0') {
+      ++j;
+    }
+    size_t digits = 0;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) {
+      ++j;
+      ++digits;
+    }
+    if (j >= pattern.size() || pattern[j] != 'd' || digits > 2) {
+      throw UsageError(option + ": \"" + pattern +
+                       "\": the only conversion a pattern may hold is %d, with an optional 0 flag and a width of at "
+                       "most 2 digits (e.g. %06d)");
+    }
+    ++conversions;
+    i = j;
+  }
+  if (conversions != 1) {
+    throw UsageError(option + ": \"" + pattern + "\": a pattern holds exactly one %d conversion, got " +
+                     std::to_string(conversions));
+  }
+  // The widest frame number: 99 digits of width or the 10 of an int.
+  if (pattern.size() + 110 > kMaxPathLength) {
+    throw UsageError(option + ": \"" + pattern.substr(0, 40) + "...\": the pattern is longer than the " +
+                     std::to_string(kMaxPathLength - 110) + " bytes a path pattern may have");
+  }
+}
+
+//! The name of frame \e index of a pattern checkPattern() accepted.
+inline std::string expandPattern(const std::string &pattern, long index)
+{
+  char buf[kMaxPathLength];
+  std::snprintf(buf, sizeof(buf), pattern.c_str(), static_cast<int>(index));
+  return buf;
+}
+
+} // namespace ssltut
+
+#endif
