@@ -72,13 +72,13 @@ void vpSSLConcentricReader::setRadiusRange(double minRadius, double maxRadius)
   m_maxRadius = maxRadius;
 }
 
-bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, Fit &f) const
+bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, int iterations, Fit &f) const
 {
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   // A few hundred gradients describe the ellipses as well as all of them: the disc is sampled on a grid of about
   // 32 x 32 points whatever its size.
   const int stride = std::max(1, static_cast<int>(radius / 16.));
-  for (int iteration = 0; iteration < 6; ++iteration) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     const double *q = f.q;
     // Bounding box of the ellipse (x - c)^T Q (x - c) = radius^2 (det Q = 1).
     const double hu = radius * std::sqrt(q[2]), hv = radius * std::sqrt(q[0]);
@@ -237,7 +237,9 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       break; // no ring structure where the rings of any readable landmark would be
     }
     Fit trial = current;
-    if (!fit(I, r, trial)) {
+    // Until the rings lock the fit, each disc starts afresh from the candidate and a few steps tell whether they
+    // are there (most candidates end here); once locked, the fit is refined to convergence.
+    if (!fit(I, r, qmax >= kLocked ? 6 : 3, trial)) {
       if (qmax >= kLocked) {
         break;
       }

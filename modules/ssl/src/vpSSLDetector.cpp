@@ -69,6 +69,9 @@ unsigned int coarseWindow(unsigned int w)
 // normalisation, which needs the whole image's table.
 const unsigned int kHistogramStep = 4;
 
+// Candidates per frame that vpSSLConcentricReader may read where the rays give up (readAllAround()).
+const unsigned int kAllAroundBudget = 8;
+
 // Smallest semi-axis, relative to the window, of a predicted landmark whose region of a tracking frame is matched on
 // the decimated image (vpSSLDetector::largeLandmarkIn()).
 const double kCoarseRegionRadius = 0.625;
@@ -199,6 +202,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
     m_offsetB[xi] = m_match.offsetP(xi);
   }
   m_refined.clear();
+  m_allAroundLeft = kAllAroundBudget;
   m_times.normalization = elapsedMs(t);
   m_pendingRois.clear();
   m_pendingIndex.clear();
@@ -376,10 +380,6 @@ void vpSSLDetector::searchRegions(const vpImage<unsigned char> &I, const vpImage
     m_times.peaks += elapsedMs(t);
   }
 
-  // The white paper just outside the outermost black ring continues the pattern by one ring (out to
-  // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
-  const double margin = 1. / std::sqrt(getTarget().getP());
-  const double margin2 = margin * margin;
   for (const vpSSLPeak &peak : m_peaks) {
     // Landmarks do not overlap, so a peak inside one already found or on its paper ring (peaks come
     // strongest first) is on its rings, not another landmark's centre: most peaks are, and reading their
@@ -388,15 +388,7 @@ void vpSSLDetector::searchRegions(const vpImage<unsigned char> &I, const vpImage
     // touches this one's outer ring: printed landmarks are separated by a margin.
     const double pu = m_upsample ? 0.5 * (peak.u + 0.5) - 0.5 : peak.u;
     const double pv = m_upsample ? 0.5 * (peak.v + 0.5) - 0.5 : peak.v;
-    bool inside = false;
-    for (const vpSSLLandmark &k : m_landmarks) {
-      const double c = std::cos(k.theta), s = std::sin(k.theta), du = pu - k.u, dv = pv - k.v;
-      const double x = (c * du + s * dv) / k.radius, y = (c * dv - s * du) / k.minorRadius;
-      if (x * x + y * y < margin2) {
-        inside = true;
-        break;
-      }
-    }
+    bool inside = insideFound(pu, pv);
     // Tracking mode (paper Sec. 4.1): a region of interest is placed around one predicted landmark. Once a
     // landmark has been read inside every region that holds this peak, the peak is on the paper or the rings
     // around it (most of the peaks left in a region are): it is not read. A landmark the regions did not
@@ -452,15 +444,51 @@ void vpSSLDetector::searchRegions(const vpImage<unsigned char> &I, const vpImage
         l.v = fine.v;
         l.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
       }
-      // The rays' reading is the more precise; where it cannot follow the rings (small, blurred or strongly
-      // oblique landmarks), the rings are read all around at once.
-      if (!m_radiusEstimator.estimate(*raw, l) && !m_concentricReader.read(*raw, l)) {
+      // The rays' reading is the more precise; where it cannot follow the rings of a point-symmetric candidate
+      // (small, blurred or strongly oblique landmarks), the rings are read all around at once.
+      if (!m_radiusEstimator.estimate(*raw, l) && !readAllAround(*raw, l)) {
         continue;
       }
     }
     keepLandmark(l, *raw, *In, coarse || partialNormalization, scale);
   }
   m_times.radius += elapsedMs(t);
+}
+
+bool vpSSLDetector::insideFound(double u, double v) const
+{
+  // The white paper just outside the outermost black ring continues the pattern by one ring (out to
+  // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
+  const double margin2 = 1. / getTarget().getP();
+  for (const vpSSLLandmark &k : m_landmarks) {
+    const double c = std::cos(k.theta), s = std::sin(k.theta), du = u - k.u, dv = v - k.v;
+    const double x = (c * du + s * dv) / k.radius, y = (c * dv - s * du) / k.minorRadius;
+    if (x * x + y * y < margin2) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool vpSSLDetector::readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
+{
+  // Only a candidate the rays found point-symmetric (a landmark is, under any affine view and symmetric blur;
+  // clutter seldom is), from the centre that test settled on; at most kAllAroundBudget per frame, the strongest
+  // peaks first (a landmark's are among them), which bounds the cost of a frame full of symmetric clutter.
+  double u = 0., v = 0.;
+  if (m_allAroundLeft == 0 || !m_radiusEstimator.getLastSymmetric(u, v) ||
+      insideFound(m_upsample ? 0.5 * (u + 0.5) - 0.5 : u, m_upsample ? 0.5 * (v + 0.5) - 0.5 : v)) {
+    return false; // the symmetric centre of a peak on a found landmark's rings is that landmark's
+  }
+  --m_allAroundLeft;
+  vpSSLLandmark c = l;
+  c.u = u;
+  c.v = v;
+  if (!m_concentricReader.read(raw, c)) {
+    return false;
+  }
+  l = c;
+  return true;
 }
 
 bool vpSSLDetector::largeLandmarkIn(const vpRect &r) const

@@ -520,9 +520,13 @@ bool vpSSLRadiusEstimator::estimate(const vpImage<unsigned char> &I, vpSSLLandma
   }
   double u = landmark.u, v = landmark.v, scale = 0.;
   m_rayImage = nullptr; // the image may have changed in place since the last call
+  m_symmetric = false;
   if (!symmetricCentre(I, u, v)) {
     return false;
   }
+  m_symmetric = true;
+  m_symmetricU = u;
+  m_symmetricV = v;
   double R[8];
   bool ok[8];
   // 1. From the matching peak: a first reading of each ray, and the centre from the ring edges.

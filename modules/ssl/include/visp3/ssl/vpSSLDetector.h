@@ -219,6 +219,10 @@ private:
   // on the image decimated twice (\e coarse), then the ring reading of the peaks; the stage times are added up.
   void searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &raw, bool coarse,
                      const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
+  // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame.
+  bool insideFound(double u, double v) const;
+  // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
+  bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
   // Whether the landmark a tracking frame's region predicts is large enough for the decimated pass.
   bool largeLandmarkIn(const vpRect &r) const;
   // Sets \e map to I's size and to 0 where the last call wrote it.
@@ -245,6 +249,7 @@ private:
   vpSSLPeakDetector m_peakDetector;
   vpSSLRadiusEstimator m_radiusEstimator;
   vpSSLConcentricReader m_concentricReader;
+  unsigned int m_allAroundLeft = 0; // candidates vpSSLConcentricReader may still read this frame
   vpSSLTargetIdentifier m_identifier;
   bool m_normalize;
   bool m_upsample;

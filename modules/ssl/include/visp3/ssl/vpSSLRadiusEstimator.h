@@ -73,6 +73,18 @@ public:
   bool estimate(const vpImage<unsigned char> &I, vpSSLLandmark &landmark, const vpSSLLandmark &prior);
 
   /*!
+    Whether the candidate of the last estimate() (from scratch) passed the point-symmetry test that opens the ring
+    reading, whatever came after, and the centre that test settled on: a point-symmetric candidate whose rays do
+    not read is worth another reader's look (vpSSLConcentricReader), most clutter is not.
+  */
+  bool getLastSymmetric(double &u, double &v) const
+  {
+    u = m_symmetricU;
+    v = m_symmetricV;
+    return m_symmetric;
+  }
+
+  /*!
     Eq. 7 sweep: \e S[w] is the +x matching sum with window w at pixel (u, v), for w up to
     \e maxWindow (or the image border).
     \return the w maximising S (the paper's apparent size), 0 if the sweep is empty.
@@ -107,6 +119,8 @@ private:
   double m_q; // sqrt(p), the ratio of successive ring edges
   double m_step;
   double m_pixelScale;
+  bool m_symmetric = false; // the last estimate()'s candidate passed the symmetry test, centred at:
+  double m_symmetricU = 0., m_symmetricV = 0.;
   // Per-ray profiles and their prefix sums, reused between candidates.
   std::vector<float> m_profile[8];
   std::vector<double> m_prefix[8];
