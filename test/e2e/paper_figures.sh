@@ -56,7 +56,7 @@ awk -F'|' '$2 ~ /^ (20|40|60) $/ { r = $2 + 0; w = $3 + 0; q = $4 + 0; d = w - r
   fail "Fig. 4 rows (expected w within 1 px of 1.41 R): $(grep -A5 'Fig. 4' out.txt)"
 
 # Fig. 5 (doc/paper-reproduction.md): the radius is 0.9 % above the true radius (median; 5th-95th percentile -4.3 %
-# to 2.0 %), the Eq. 7 sweep 36.9 % above it (22.1 % to 45.5 %). --quick reads the 9 frames of
+# to 2.0 %), the Eq. 7 sweep 36.9 % above it (18.7 % to 45.4 %). --quick reads the 9 frames of
 # data/sequences/approach-clear in which B is detected: the medians must be those of the doc within half a point
 # (radius) and 3 points (Eq. 7), the percentiles inside the doc's ranges widened by the same.
 fig5=$(grep -A2 '^## Fig. 5' out.txt | grep 'frames of')
@@ -73,7 +73,7 @@ assert n >= 9, "frames with B: %d, expected 9" % n
 assert abs(ring[0] - 0.9) <= 0.5, "ring median %.1f %%, doc 0.9 %%" % ring[0]
 assert ring[1] >= -4.8 and ring[2] <= 2.5, "ring p5-p95 %.1f-%.1f %%, doc -4.3-2.0 %%" % (ring[1], ring[2])
 assert abs(eq7[0] - 36.9) <= 3.0, "Eq. 7 median %.1f %%, doc 36.9 %%" % eq7[0]
-assert eq7[1] >= 19.1 and eq7[2] <= 48.5, "Eq. 7 p5-p95 %.1f-%.1f %%, doc 22-46 %%" % (eq7[1], eq7[2])
+assert eq7[1] >= 15.7 and eq7[2] <= 48.4, "Eq. 7 p5-p95 %.1f-%.1f %%, doc 18.7-45.4 %%" % (eq7[1], eq7[2])
 ' 2>fig5.err && pass "Fig. 5: radius 0.9 % and Eq. 7 36.9 % above the true radius" || fail "Fig. 5: $(cat fig5.err): $fig5"
 fi
 
