@@ -434,3 +434,12 @@ TEST(TargetModel, AddLandmarkRejectsBadLandmarks)
   EXPECT_THROW(vpSSLTarget().getMaxRadius(), vpException);
   EXPECT_THROW(vpSSLTarget().save("/nonexistent-dir/x.txt"), vpException); // no name, no landmark
 }
+
+TEST_F(TargetFileTest, AutomaticSheetBeyondTheLimitsIsRejectedSoThatSavedTargetsLoadBack)
+{
+  // Landmarks 120 m apart: their automatic sheet is larger than a written sheet may be (100 m); accepting it would
+  // write a file that load() rejects.
+  const std::string e = loadError("name t\nlandmark B -60 0 0 0.1 0.5\nlandmark S1 60 0 0 0.05 0.5\n");
+  EXPECT_NE(e.find(": sheet: the automatic sheet around the landmarks: width: must be at most"), std::string::npos)
+      << e;
+}

@@ -322,6 +322,14 @@ private:
     }
     if (m_sheetLine != 0) {
       m_target.setSheet(m_sheet[0], m_sheet[1], m_sheet[2], m_sheet[3]);
+    } else {
+      // The automatic sheet (the landmarks' bounding box plus a margin) meets the limits of a written one, so that
+      // what save() writes loads back.
+      const std::string pb = sheetProblem(m_target.getSheetWidth(), m_target.getSheetHeight(),
+                                          m_target.getSheetCenterX(), m_target.getSheetCenterY());
+      if (!pb.empty()) {
+        fail("sheet", "the automatic sheet around the landmarks: " + pb, 0);
+      }
     }
     for (size_t i = 0; i < m_target.size(); ++i) {
       std::string pb = fitProblem(m_target.getLandmark(i), m_target);
