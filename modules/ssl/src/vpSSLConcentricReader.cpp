@@ -15,6 +15,9 @@ const int kRays = 64;
 // The fit's disc grows by this factor per step, from kFirstRadius px.
 const double kGrowth = 1.25;
 const double kFirstRadius = 6.;
+// Side of the grid of gradient samples over the disc (points): fine once the rings lock the fit, coarse before.
+const double kFineGrid = 32.;
+const double kCoarseGrid = 16.;
 // Largest disc searched for the rings' concentric structure when none has been seen yet (px): the innermost ring a
 // blur of sigma 4 px leaves readable lies at about 35 px.
 const double kLockRadius = 48.;
@@ -72,12 +75,13 @@ void vpSSLConcentricReader::setRadiusRange(double minRadius, double maxRadius)
   m_maxRadius = maxRadius;
 }
 
-bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, int iterations, Fit &f) const
+bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, int iterations, double gridSide,
+                                Fit &f) const
 {
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   // A few hundred gradients describe the ellipses as well as all of them: the disc is sampled on a grid of about
-  // 32 x 32 points whatever its size.
-  const int stride = std::max(1, static_cast<int>(radius / 16.));
+  // gridSide x gridSide points whatever its size.
+  const int stride = std::max(1, static_cast<int>(2. * radius / gridSide));
   for (int iteration = 0; iteration < iterations; ++iteration) {
     const double *q = f.q;
     // Bounding box of the ellipse (x - c)^T Q (x - c) = radius^2 (det Q = 1).
@@ -237,9 +241,11 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       break; // no ring structure where the rings of any readable landmark would be
     }
     Fit trial = current;
-    // Until the rings lock the fit, each disc starts afresh from the candidate and a few steps tell whether they
-    // are there (most candidates end here); once locked, the fit is refined to convergence.
-    if (!fit(I, r, qmax >= kLocked ? 6 : 3, trial)) {
+    // Until the rings lock the fit, each disc starts afresh from the candidate and a few steps on a coarse grid
+    // tell whether they are there (most candidates end here); once locked, the fit is refined to convergence on
+    // the fine grid.
+    const bool locked = qmax >= kLocked;
+    if (!fit(I, r, locked ? 6 : 3, locked ? kFineGrid : kCoarseGrid, trial)) {
       if (qmax >= kLocked) {
         break;
       }
@@ -249,7 +255,12 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       break;
     }
     if (std::hypot(trial.u - landmark.u, trial.v - landmark.v) > std::max(4., 0.5 * r)) {
-      break; // another structure pulled the centre away
+      // Another structure pulled the centre away: once locked, the disc has grown past the landmark; before, a
+      // small disc round a blurred centre or a candidate a few pixels off says nothing yet, and a larger one may.
+      if (locked) {
+        break;
+      }
+      continue;
     }
     // Until the rings lock the fit, each disc starts afresh from the candidate: a poor fit of a blurred centre
     // would only mislead the next one.
@@ -285,12 +296,25 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     }
     level[bin] = count > 0 ? sum / count : -1.;
   }
-  double bestCorrelation = -1e30, phase = 0.;
+  // The window seldom holds a whole number of periods: the levels are correlated about their mean, or the half
+  // of the wave with more bins in the window would win by the mean level alone.
+  double mean = 0.;
   int used = 0;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+    if (tau >= tauA && tau <= tauB && level[bin] >= 0.) {
+      mean += level[bin];
+      ++used;
+    }
+  }
+  if (used < kBinsPerPeriod) {
+    return false; // less than one period of resolved rings
+  }
+  mean /= used;
+  double bestCorrelation = -1e30, phase = 0.;
   for (int k = 0; k < 4 * kBinsPerPeriod; ++k) {
     const double tauR = k / (4. * kBinsPerPeriod);
     double correlation = 0.;
-    used = 0;
     for (int bin = 0; bin < m_nbBins; ++bin) {
       const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
       if (tau < tauA || tau > tauB || level[bin] < 0.) {
@@ -298,16 +322,12 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       }
       double x = tauR - tau;
       x -= std::floor(x);
-      correlation += x < 0.5 ? -level[bin] : level[bin];
-      ++used;
+      correlation += x < 0.5 ? mean - level[bin] : level[bin] - mean;
     }
     if (correlation > bestCorrelation) {
       bestCorrelation = correlation;
       phase = tauR;
     }
-  }
-  if (used < kBinsPerPeriod) {
-    return false; // less than one period of resolved rings
   }
 
   // 3. The outer ring: the outermost p-similar copy whose black ring is dark against the white one inside it in
@@ -375,7 +395,9 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     // The scale from the two printed edges inside the outer ring (R sqrt(p): white to black, R p: black to white,
     // going outwards), where the profile crosses the mid level between the rings: the widest rings, the least
     // blurred, and both edges printed (the outer edge's outside is unknown).
-    const double mid = 0.5 * (black + white);
+    // Each edge is crossed at the mid level of its own two rings: the inner black ring, narrower, is greyed by the
+    // blur more than the outer one, and a common level would move the inner edge.
+    const double mids[2] = {0.5 * (black + white), 0.5 * (black1 + white)};
     double shift = 0.;
     int edges = 0;
     for (int e = 0; e < 2; ++e) {
@@ -386,7 +408,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
         if (level[bin] < 0. || level[bin + 1] < 0.) {
           continue;
         }
-        const double a = level[bin] - mid, c = level[bin + 1] - mid;
+        const double a = level[bin] - mids[e], c = level[bin + 1] - mids[e];
         // Outwards, the edge at R sqrt(p) goes from white to black, the one at R p from black to white.
         const bool crosses = rising ? (a < 0. && c >= 0.) : (a > 0. && c <= 0.);
         if (!crosses) {
