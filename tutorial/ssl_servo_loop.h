@@ -24,11 +24,15 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpPoint.h>
 #include <visp3/core/vpRxyzVector.h>
+#include <visp3/core/vpThetaUVector.h>
 #include <visp3/core/vpTranslationVector.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLAuvSimulator.h>
 #include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
+#include <visp3/ssl/vpSSLParticleFilter.h>
+#include <visp3/ssl/vpSSLPoseEstimator.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLScenario.h>
 #include <visp3/ssl/vpSSLServoInput.h>
@@ -69,33 +73,212 @@ inline long parseInteger(const std::string &name, const std::string &text, long 
   }
 }
 
-//! How the target is found at each step.
+//! How the target is found at each step. The fused methods run the same particle filter (vpSSLParticleFilter) with
+//! the same odometry and keep servoing on its prediction when the target is lost; the raw ones give the single-frame
+//! pose of each image and nothing when it shows no target.
 enum class Method
 {
-  Ssl,      ///< vpSSLTracker on the rendered ssl3-a3 sheet.
-  AprilTag, ///< The AprilTag baseline (36h11) on the rendered tag sheet.
-  Truth     ///< Perfect sensor: the ssl3-a3 landmarks projected at the true pose when in view (no image).
+  Ssl,         ///< vpSSLTracker (detector, single-frame pose, particle filter with odometry) on the ssl3-a3 sheet.
+  AprilTag,    ///< The AprilTag baseline (36h11) on the tag sheet, its corners and pose fed to the same filter.
+  Truth,       ///< Perfect sensor: the ssl3-a3 landmarks projected at the true pose when in view (no image).
+  SslRaw,      ///< vpSSLDetector and vpSSLPoseEstimator alone: the best single-frame pose of each image.
+  AprilTagRaw, ///< The AprilTag baseline alone: the tag's corners and pose of each image.
 };
 
-//! "ssl", "apriltag", "truth".
-inline std::string methodName(Method m)
+//! Every method, in the order of methodName()'s names.
+inline const std::vector<Method> &allMethods()
 {
-  return m == Method::Ssl ? "ssl" : m == Method::AprilTag ? "apriltag" : "truth";
+  static const std::vector<Method> methods = {Method::Ssl, Method::AprilTag, Method::Truth, Method::SslRaw,
+                                              Method::AprilTagRaw};
+  return methods;
 }
 
-//! \e name as a Method; false when it is none of "ssl", "apriltag", "truth".
+//! "ssl", "apriltag", "truth", "ssl-raw", "apriltag-raw".
+inline std::string methodName(Method m)
+{
+  switch (m) {
+  case Method::Ssl:
+    return "ssl";
+  case Method::AprilTag:
+    return "apriltag";
+  case Method::Truth:
+    return "truth";
+  case Method::SslRaw:
+    return "ssl-raw";
+  case Method::AprilTagRaw:
+    return "apriltag-raw";
+  }
+  return "";
+}
+
+//! \e name as a Method; false when it is none of methodName()'s names.
 inline bool parseMethod(const std::string &name, Method &m)
 {
-  if (name == "ssl") {
-    m = Method::Ssl;
-  } else if (name == "apriltag") {
-    m = Method::AprilTag;
-  } else if (name == "truth") {
-    m = Method::Truth;
-  } else {
-    return false;
+  for (Method candidate : allMethods()) {
+    if (methodName(candidate) == name) {
+      m = candidate;
+      return true;
+    }
   }
-  return true;
+  return false;
+}
+
+//! Whether \e m shows the AprilTag sheet (rendered instead of ssl3-a3).
+inline bool isAprilTag(Method m)
+{
+  return m == Method::AprilTag || m == Method::AprilTagRaw;
+}
+
+/*!
+  The fusion the SSL tracker gives its detections, for the AprilTag baseline: the same particle filter
+  (vpSSLParticleFilter with its defaults, as vpSSLTracker) over a target made of the tag's four corners,
+  predicted with the vehicle's odometry at each image, updated with the detected corners and re-initialised
+  from the tag's pose (vpSSLTracker's paper Sec. 3.3 scheme); the tag's pose is the input when the filter agrees
+  with it. While the tag is not seen the prediction stays the input (nbPoints 0) for as many images as
+  vpSSLTracker's default setMaxLostFrames() (5), then nothing.
+*/
+class AprilTagFusion
+{
+public:
+  AprilTagFusion(double tagSize, const vpCameraParameters &cam, const vpHomogeneousMatrix &vMc)
+      : m_target(cornerTarget(tagSize)), m_filter(m_target, cam), m_cam(cam), m_cMv(vMc.inverse())
+  {
+  }
+
+  void setSeed(long seed) { m_filter.setSeed(seed); } //!< Seed of the filter's particles.
+
+  /*!
+    One image: \e detection is vpSSLServoInput::fromAprilTag() of the tag (or none()), \e oMv the odometry.
+    \return the fused input: measured corners where seen, the filter's pose and projected corners otherwise.
+  */
+  vpSSLServoInput track(const vpSSLServoInput &detection, const vpHomogeneousMatrix &oMv)
+  {
+    bool finite = true;
+    for (unsigned int i = 0; i < 3; ++i) {
+      for (unsigned int j = 0; j < 4; ++j) {
+        finite = finite && std::isfinite(oMv[i][j]);
+      }
+    }
+    if (m_active) {
+      if (m_hasOdometry && finite) {
+        m_filter.predict(m_oMvPrevious.inverse() * oMv, m_cMv); // v1Mv2, as vpSSLTracker::track()
+      } else {
+        m_filter.predict();
+      }
+    }
+    if (finite) {
+      m_oMvPrevious = oMv;
+      m_hasOdometry = true;
+    }
+    const bool seen = detection.valid && detection.points.size() == 4;
+    if (seen) {
+      std::vector<vpSSLObservation> observations;
+      for (size_t k = 0; k < 4; ++k) {
+        vpSSLObservation o; // radius unknown (0): the filter weighs the corner positions only
+        o.label = static_cast<int>(k);
+        o.u = m_cam.get_u0() + m_cam.get_px() * detection.points[k].x;
+        o.v = m_cam.get_v0() + m_cam.get_py() * detection.points[k].y;
+        observations.push_back(o);
+      }
+      vpSSLPoseHypothesis h;
+      h.cMo = detection.cMo;
+      h.nbLandmarks = 4;
+      const std::vector<vpSSLPoseHypothesis> hypotheses(1, h);
+      if (!m_active) {
+        m_filter.init(hypotheses);
+        m_filter.update(observations);
+        m_active = true;
+      } else {
+        m_filter.update(observations, hypotheses);
+      }
+      m_lostInRow = 0;
+    } else if (m_active && ++m_lostInRow > 5) {
+      m_active = false;
+    }
+    if (!m_active) {
+      return vpSSLServoInput::none();
+    }
+    // As vpSSLTracker's pose: the image's pose when it lies within the filter's uncertainty (its default gate:
+    // 3 sigmas plus 10 % of the range, 3 sigmas plus 30 deg), the filter's mean otherwise.
+    const vpHomogeneousMatrix mean = m_filter.getMeanPose();
+    if (seen) {
+      const vpMatrix C = m_filter.getCovariance();
+      const double sigmaT = std::sqrt(std::max(0., C[0][0] + C[1][1] + C[2][2]));
+      const double sigmaR = std::sqrt(std::max(0., C[3][3] + C[4][4] + C[5][5]));
+      const vpTranslationVector tMean = mean.getTranslationVector();
+      const double distance = (detection.cMo.getTranslationVector() - tMean).frobeniusNorm();
+      const vpThetaUVector tu(mean.getRotationMatrix().t() * detection.cMo.getRotationMatrix());
+      if (distance <= 3. * sigmaT + 0.1 * tMean.frobeniusNorm() &&
+          std::sqrt(tu.sumSquare()) <= 3. * sigmaR + vpMath::rad(30.)) {
+        return detection;
+      }
+    }
+    vpSSLServoInput in = vpSSLServoInput::fromPose(m_target.getPoints(), mean);
+    if (seen) {
+      for (size_t k = 0; k < 4; ++k) {
+        in.points[k].x = detection.points[k].x;
+        in.points[k].y = detection.points[k].y;
+      }
+    }
+    in.nbPoints = seen ? 4 : 0;
+    return in;
+  }
+
+private:
+  // The corners in vpSSLServoInput::fromAprilTag()'s order and frame (X right, Y down, Z into the sheet).
+  static vpSSLTarget cornerTarget(double tagSize)
+  {
+    vpSSLTarget t;
+    const double h = tagSize / 2.;
+    const double corners[4][2] = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+    for (int k = 0; k < 4; ++k) {
+      vpSSLTargetLandmark l;
+      l.name = "C" + std::to_string(k);
+      l.x = corners[k][0];
+      l.y = corners[k][1];
+      l.radius = vpSSLTarget::minRadius();
+      t.addLandmark(l);
+    }
+    return t;
+  }
+
+  vpSSLTarget m_target;
+  vpSSLParticleFilter m_filter;
+  vpCameraParameters m_cam;
+  vpHomogeneousMatrix m_cMv, m_oMvPrevious;
+  bool m_active = false, m_hasOdometry = false;
+  unsigned int m_lostInRow = 0;
+};
+
+/*!
+  The SSL detections without fusion: the best single-frame pose of vpSSLPoseEstimator (small-landmark mode, which
+  finds the large landmarks too), as the target's landmarks at that pose; a position-only pose (one or two
+  landmarks) gives the landmark it places. \return none() when the image shows no target.
+*/
+inline vpSSLServoInput singleFrameInput(vpSSLDetector &detector, const vpSSLPoseEstimator &estimator,
+                                        const vpCameraParameters &cam, const vpImage<unsigned char> &I)
+{
+  if (!detector.detect(I) || !detector.getTargetMatch().found) {
+    return vpSSLServoInput::none();
+  }
+  const std::vector<vpSSLPoseHypothesis> hypotheses = estimator.estimate(detector, cam);
+  if (hypotheses.empty()) {
+    return vpSSLServoInput::none();
+  }
+  const vpSSLPoseHypothesis &h = hypotheses.front();
+  const vpSSLTarget &target = estimator.getTarget();
+  if (!h.positionOnly) {
+    vpSSLServoInput in = vpSSLServoInput::fromPose(target.getPoints(), h.cMo);
+    in.nbPoints = h.nbLandmarks;
+    return in;
+  }
+  const vpSSLTargetLandmark &l = target.getLandmark(static_cast<size_t>(std::max(0, h.landmark)));
+  const vpHomogeneousMatrix cMo =
+      h.cMo * vpHomogeneousMatrix(vpTranslationVector(-l.x, -l.y, -l.z), vpRotationMatrix());
+  vpSSLServoInput in = vpSSLServoInput::fromPose(std::vector<vpPoint>(1, vpPoint(l.x, l.y, l.z)), cMo);
+  in.hasPose = false; // the orientation is a placeholder
+  in.nbPoints = h.nbLandmarks;
+  return in;
 }
 
 //! The camera of the paper's vehicle (data/camera/camera-640x480.xml) scaled to \e width x \e height (same field of
@@ -225,7 +408,9 @@ public:
       : m_scene(scene), m_method(method), m_cam(cam), m_width(width), m_height(height), m_seed(seed),
         m_water(vpSSLWaterModel::preset(scene.water)), m_renderer(cam, width, height),
         m_sheet(vpSSLAprilTagSheet::a3(0)), m_target(vpSSLTarget::ssl3a3()),
-        m_tracker(m_target, cam, m_auv.getCameraToVehicle()), m_tagFinder(m_sheet, cam)
+        m_tracker(m_target, cam, m_auv.getCameraToVehicle()), m_tagFinder(m_sheet, cam),
+        m_tagFusion(m_sheet.getTagSize(), cam, m_auv.getCameraToVehicle()), m_rawDetector(m_target),
+        m_rawEstimator(m_target)
   {
     m_auv.setTimeStep(scene.timeStep);
     m_auv.setTargetPose(scene.wMoHome);
@@ -242,7 +427,7 @@ public:
     m_homing.setBlindDock(scene.blindDockRange, scene.blindDockSpeed);
 
     m_renderer.setSupersampling(supersampling);
-    if (method == Method::AprilTag) {
+    if (isAprilTag(method)) {
       m_renderer.setAprilTagSheet(m_sheet);
     } else {
       m_renderer.setTarget(m_target);
@@ -255,8 +440,10 @@ public:
       m_renderer.setMaxRange(std::log(1e5) / clearest);
     }
     // The renderer takes the pose of the tag frame for an AprilTag sheet; the simulator the sheet frame.
-    m_sMo = method == Method::AprilTag ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();
+    m_sMo = isAprilTag(method) ? vpSSLAprilTagSheet::getSheetToTag() : vpHomogeneousMatrix();
     m_tracker.setSeed(seed);
+    m_tagFusion.setSeed(seed);
+    m_rawDetector.setSmallLandmarkMode(true);
     for (const vpSSLTargetLandmark &l : m_target.getLandmarks()) {
       m_truthPoints.emplace_back(l.x, l.y, l.z);
     }
@@ -297,7 +484,7 @@ public:
       if (m_auv.isTargetInWater() && m_renderer.isTargetInView(cMo)) {
         input = vpSSLServoInput::fromPose(m_truthPoints, cMo);
       }
-    } else if (m_method == Method::AprilTag) {
+    } else if (isAprilTag(m_method)) {
       if (m_tagFinder.detect(m_I)) {
         vpDetectorAprilTag &det = m_tagFinder.getDetector();
         const std::vector<int> ids = det.getTagsId();
@@ -309,6 +496,11 @@ public:
           }
         }
       }
+      if (m_method == Method::AprilTag) {
+        input = m_tagFusion.track(input, m_auv.getOdometry());
+      }
+    } else if (m_method == Method::SslRaw) {
+      input = singleFrameInput(m_rawDetector, m_rawEstimator, m_cam, m_I);
     } else {
       m_tracker.track(m_I, m_auv.getOdometry());
       input = vpSSLServoInput::fromTracker(m_tracker);
@@ -384,6 +576,9 @@ private:
   vpSSLTarget m_target; // kept alive: the tracker and the truth points refer to its landmarks
   vpSSLTracker m_tracker;
   sslbench::AprilTagBaseline m_tagFinder;
+  AprilTagFusion m_tagFusion;
+  vpSSLDetector m_rawDetector;
+  vpSSLPoseEstimator m_rawEstimator;
   vpHomogeneousMatrix m_sMo;
   std::vector<vpPoint> m_truthPoints;
   vpImage<float> m_reflectance, m_range;

@@ -1,7 +1,8 @@
 //! \example tutorial-ssl-servo-monte-carlo.cpp
-//! Monte Carlo docking benchmark: the closed loop of tutorial-ssl-servo from random start poses, currents
-//! and waters, the same draws for every method; docking success rate, stand-off error and time to dock per method
-//! and water as runs.csv and a Markdown summary.
+//! Monte Carlo docking benchmark: the whole mission of tutorial-ssl-servo's closed loop (search, align, home,
+//! dock) from random starts with the target out of view, in random currents and waters, the same draws for every
+//! method; docking success, the reason of each failure, stand-off error and time to dock per method, water and start
+//! range as runs.csv, a Markdown summary and a PNG of the outcomes.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -24,8 +25,10 @@
 #endif
 
 #include <visp3/core/vpIoTools.h>
+#include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpRxyzVector.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
+#include <visp3/ssl/vpSSLPlot.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
 #include "ssl_servo_loop.h"
@@ -38,20 +41,35 @@ using sslservo::parseInteger;
 using sslservo::UsageError;
 
 const char *kUsage = R"(Usage: tutorial-ssl-servo-monte-carlo [options]
-Monte Carlo docking benchmark: N runs of the closed loop of tutorial-ssl-servo (simulated AUV, rendered images,
-detection, homing behaviour with auto-dock) from random starts, the same draws for every method. Per run: start
-2.5-5 m in front of the target (camera to target centre, along the target's axis), lateral offset +-0.6 m,
-heading +-20 deg, depth offset +-0.4 m, current 0-0.15 m/s in a random horizontal direction, water clear or
-coastal (coastal only for starts <= 3.5 m, its visibility limit); stand-off 2 m (coastal 1.5 m), docking after
-holding the stand-off for 10 s within 0.5 m and 15 deg (--dock-hold: a cross current the vehicle cannot counter
-without sway makes a tight hold impossible, see doc/servo-simulation.md). Writes DIR/runs.csv (one row per run and method, draws included) and
-DIR/summary.md (also on stdout): docking success, stand-off RMS and time to dock per method and water.
+Monte Carlo docking benchmark: N runs of the whole mission in the closed loop of tutorial-ssl-servo (simulated AUV,
+rendered images, detection, homing behaviour: search, align, home, auto-dock) from random starts, the same draws
+for every method. Per run: water clear or coastal (--water); camera at a range uniform in --start-range from the
+target centre (capped at the water's visibility, 4 m in coastal water), on a bearing within +-30 deg of the target's
+axis, depth offset +-1 m; heading uniform within +-DEG (--start-heading) of the direction of the target, drawn
+again until the target is out of the camera's field of view (start_in_view says when 100 draws did not get it
+out); current 0 to --max-current m/s in a random horizontal direction. Stand-off 2 m (coastal 1.5 m), docking
+after holding the stand-off for 10 s within 0.5 m and 15 deg (--dock-hold: a cross current the vehicle cannot
+counter without sway makes a tight hold impossible, see doc/servo-simulation.md); docked when the nose touches the
+board in DOCK (the collision sensor). Writes DIR/runs.csv (one row per run and method, draws included),
+DIR/summary.md (also on stdout: docking success, failures by reason, stand-off RMS, time to dock per method and
+water, and per start range) and DIR/outcomes.png (success by start range and by current, per method).
+Methods: ssl (vpSSLTracker: detector, single-frame pose, particle filter with the odometry), apriltag (the 36h11
+sheet, its corners and pose fed to the same particle filter with the same odometry), truth (perfect sensor),
+ssl-raw and apriltag-raw (the single-frame pose of each image, nothing when the target is not seen).
+Failure reasons (column failure; empty when docked): never-found (the target was never seen), lost (seen, then
+lost and not found again: SEARCH at the end), hold-not-reached (ALIGN or HOME at the end, DOCK never requested),
+missed-board (in DOCK the camera came within 0.3 m of the target's plane or passed it without the nose touching
+the board), collision (the nose hit the board outside DOCK and the run did not dock), time-out (still in DOCK).
 Options:
   --runs N             Runs per method (default 20).
   --seed S             Seed of the draws and of the sensors (default 1); run i uses the same draws for all methods.
-  --methods LIST       Comma-separated among ssl, apriltag, truth (default ssl,apriltag).
-  --time-limit S       Simulated seconds per run (default 120).
-  --max-current V      Largest current drawn (m/s, default 0.15; 0: still water).
+  --methods LIST       Comma-separated among ssl, apriltag, truth, ssl-raw, apriltag-raw
+                       (default ssl,apriltag,truth).
+  --time-limit S       Simulated seconds per run (default 240).
+  --start-range MIN,MAX  Camera to target centre at the start (m, default 2,8; 0.5 <= MIN <= MAX <= 30).
+  --start-heading DEG  Heading uniform within +-DEG of the direction of the target (default 180, in [0, 180]).
+  --water NAME         clear, coastal or mixed (each run draws one of the two, default mixed).
+  --max-current V      Largest current drawn (m/s, default 0.1; 0: still water).
   --dock-hold S,M,DEG  Auto-dock after S seconds in HOME within M metres of the stand-off and DEG degrees of
                        the optical axis (default 10,0.5,15; fig9 of tutorial-ssl-servo uses 10,0.1,5).
   --threads T          Runs in parallel (default 2); the results do not depend on it.
@@ -67,16 +85,19 @@ Exit status: 0 on success, 2 on a bad option (one line on stderr), 1 when a run 
 output file cannot be written whole, or on any other runtime failure (one line on stderr).
 runs.csv columns: run, method, water, seed, start_distance, lateral, heading_deg, depth_offset, current_speed,
 current_dir_deg, stand_off, start_range, docked, time_to_dock, standoff_rms, settled_steps, first_detection,
-collisions_outside_dock, lost_events, final_state, sim_time.
+collisions_outside_dock, lost_events, final_state, sim_time, start_in_view, failure.
 )";
 
 struct Options
 {
   long runs = 20;
   long seed = 1;
-  std::vector<sslservo::Method> methods = {sslservo::Method::Ssl, sslservo::Method::AprilTag};
-  double timeLimit = 120.;
-  double maxCurrent = 0.15;
+  std::vector<sslservo::Method> methods = {sslservo::Method::Ssl, sslservo::Method::AprilTag, sslservo::Method::Truth};
+  double timeLimit = 240.;
+  double startRangeMin = 2., startRangeMax = 8.;
+  double startHeading = 180.;
+  std::string water = "mixed";
+  double maxCurrent = 0.1;
   double dockHold = 10., dockRange = 0.5, dockAngle = 15.;
   long threads = 2;
   bool traces = false;
@@ -94,7 +115,7 @@ std::vector<sslservo::Method> parseMethods(const std::string &text)
   while (std::getline(ss, name, ',')) {
     sslservo::Method m;
     if (!sslservo::parseMethod(name, m)) {
-      throw UsageError{"--methods: unknown \"" + name + "\" (ssl, apriltag, truth)"};
+      throw UsageError{"--methods: unknown \"" + name + "\" (ssl, apriltag, truth, ssl-raw, apriltag-raw)"};
     }
     if (std::find(methods.begin(), methods.end(), m) != methods.end()) {
       throw UsageError{"--methods: \"" + name + "\" given twice"};
@@ -102,7 +123,7 @@ std::vector<sslservo::Method> parseMethods(const std::string &text)
     methods.push_back(m);
   }
   if (methods.empty() || text.back() == ',') {
-    throw UsageError{"--methods: expected a comma-separated list of ssl, apriltag, truth, got \"" + text + "\""};
+    throw UsageError{"--methods: expected a comma-separated list of methods (see --help), got \"" + text + "\""};
   }
   return methods;
 }
@@ -131,6 +152,25 @@ Options parse(int argc, char **argv, bool &help)
       o.timeLimit = parseDouble(a, value());
       if (o.timeLimit <= 0. || o.timeLimit > 3600.) {
         throw UsageError{"--time-limit: expected a value in (0, 3600] s"};
+      }
+    } else if (a == "--start-range") {
+      const std::string v = value();
+      double lo = 0., hi = 0.;
+      char tail = 0;
+      if (std::sscanf(v.c_str(), "%lf,%lf%c", &lo, &hi, &tail) != 2 || !(lo >= 0.5) || !(hi >= lo) || !(hi <= 30.)) {
+        throw UsageError{"--start-range: expected MIN,MAX with 0.5 <= MIN <= MAX <= 30 m, got \"" + v + "\""};
+      }
+      o.startRangeMin = lo;
+      o.startRangeMax = hi;
+    } else if (a == "--start-heading") {
+      o.startHeading = parseDouble(a, value());
+      if (o.startHeading < 0. || o.startHeading > 180.) {
+        throw UsageError{"--start-heading: expected a value in [0, 180] deg"};
+      }
+    } else if (a == "--water") {
+      o.water = value();
+      if (o.water != "clear" && o.water != "coastal" && o.water != "mixed") {
+        throw UsageError{"--water: expected clear, coastal or mixed, got \"" + o.water + "\""};
       }
     } else if (a == "--max-current") {
       o.maxCurrent = parseDouble(a, value());
@@ -181,10 +221,11 @@ struct Draw
   bool coastal;        // water preset: coastal (4 m visibility) or clear
   double distance;     // camera to target centre along the target's axis (m)
   double lateral;      // camera offset across the target's axis (m, east)
-  double heading;      // vehicle heading off the target's axis (rad)
+  double heading;      // vehicle heading, from north towards east (rad)
   double depthOffset;  // camera depth minus target centre depth (m)
   double currentSpeed; // m/s
   double currentDir;   // rad from north towards east
+  bool inView;         // the target was still in the field of view after the last heading drawn
 };
 
 // Uniform in [a, b) from 53 bits of the generator: std::uniform_real_distribution is implementation-defined, this
@@ -194,20 +235,57 @@ double uniform(std::mt19937_64 &g, double a, double b)
   return a + (b - a) * static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
 
-Draw makeDraw(long seed, int run, double maxCurrent)
+sslservo::Scene makeScene(const Draw &d, const Options &opt);
+
+// Whether a corner of the target's sheet projects into the image from the start of \e d.
+bool sheetInView(const Draw &d, const Options &opt, const vpCameraParameters &cam)
+{
+  const sslservo::Scene scene = makeScene(d, opt);
+  const vpHomogeneousMatrix cMo =
+      (scene.wMvStart * vpSSLScenario::getDefaultCameraToVehicle()).inverse() * scene.wMoHome;
+  const vpSSLTarget target = vpSSLTarget::ssl3a3();
+  const double w = target.getSheetWidth() / 2., h = target.getSheetHeight() / 2.;
+  for (const double cx : {-w, w}) {
+    for (const double cy : {-h, h}) {
+      const vpTranslationVector c = cMo * vpTranslationVector(cx, cy, 0.);
+      double u = 0., v = 0.;
+      if (c[2] > 0.) {
+        vpMeterPixelConversion::convertPoint(cam, c[0] / c[2], c[1] / c[2], u, v);
+        if (u >= 0. && v >= 0. && u < opt.width && v < opt.height) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+Draw makeDraw(long seed, int run, const Options &opt, const vpCameraParameters &cam, double coastalVisibility)
 {
   std::mt19937_64 g(static_cast<std::uint64_t>(seed) * 1000003ULL + static_cast<std::uint64_t>(run));
   Draw d;
   d.run = run;
   d.seed = seed * 100003L + run + 1;
-  d.coastal = uniform(g, 0., 1.) < 0.5;
-  // Beyond 3.5 m the target cannot be seen in coastal water: the run would only measure the search.
-  d.distance = uniform(g, 2.5, d.coastal ? 3.5 : 5.);
-  d.lateral = uniform(g, -0.6, 0.6);
-  d.heading = vpMath::rad(uniform(g, -20., 20.));
-  d.depthOffset = uniform(g, -0.4, 0.4);
-  d.currentSpeed = uniform(g, 0., maxCurrent);
+  const double w = uniform(g, 0., 1.);
+  d.coastal = opt.water == "coastal" || (opt.water == "mixed" && w < 0.5);
+  // Beyond its visibility the target cannot be seen: the run would only measure the search.
+  const double hi = d.coastal ? std::min(opt.startRangeMax, coastalVisibility) : opt.startRangeMax;
+  const double range = uniform(g, std::min(opt.startRangeMin, hi), hi);
+  const double bearing = vpMath::rad(uniform(g, -30., 30.));
+  d.distance = range * std::cos(bearing);
+  d.lateral = range * std::sin(bearing);
+  d.depthOffset = uniform(g, -1., 1.);
+  d.currentSpeed = uniform(g, 0., opt.maxCurrent);
   d.currentDir = uniform(g, 0., 2. * M_PI);
+  // Heading off the direction of the target (north, then the bearing back to the target centre).
+  const double towards = std::atan2(-d.lateral, d.distance);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    d.heading = towards + vpMath::rad(uniform(g, -opt.startHeading, opt.startHeading));
+    d.inView = sheetInView(d, opt, cam);
+    if (!d.inView) {
+      break;
+    }
+  }
   return d;
 }
 
@@ -243,7 +321,9 @@ struct Result
   int lostEvents = 0;
   vpSSLHomingState finalState = SSL_HOMING_SEARCH;
   double simTime = 0.;
-  double wallTime = 0.; // not written: it depends on the load and the thread count
+  std::string failure;       // empty when docked
+  double minDockRange = NAN; // smallest true camera to target range in DOCK (m)
+  double wallTime = 0.;      // not written: it depends on the load and the thread count
 };
 
 Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &cam, const Options &opt)
@@ -252,7 +332,7 @@ Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &
   const sslservo::Scene scene = makeScene(d, opt);
   sslservo::ClosedLoop loop(scene, method, cam, opt.width, opt.height, 1, d.seed);
   Result res;
-  res.startRange = loop.getAuv().get_cMo()[2][3];
+  res.startRange = loop.getAuv().get_cMo().getTranslationVector().frobeniusNorm();
   std::vector<sslservo::Row> rows;
   const int nbSteps = static_cast<int>(std::lround(opt.timeLimit / scene.timeStep));
   vpSSLHomingState previous = SSL_HOMING_SEARCH;
@@ -275,6 +355,10 @@ Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &
     previous = r.state;
     previousCollision = collision;
     res.simTime = r.t;
+    if (r.state == SSL_HOMING_DOCK) {
+      // Behind the target's plane the range is negative (or unknown when the target is out of the water).
+      res.minDockRange = std::isfinite(res.minDockRange) ? std::min(res.minDockRange, r.trueRange) : r.trueRange;
+    }
     if (r.state == SSL_HOMING_DOCKED) {
       res.docked = true;
       res.timeToDock = r.t;
@@ -283,6 +367,21 @@ Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &
     loop.apply();
   }
   res.finalState = previous;
+  if (res.docked) {
+    res.failure.clear();
+  } else if (!std::isfinite(res.firstDetection)) {
+    res.failure = "never-found";
+  } else if (res.minDockRange < 0.3) {
+    res.failure = "missed-board";
+  } else if (res.collisionsOutsideDock > 0) {
+    res.failure = "collision";
+  } else if (res.finalState == SSL_HOMING_SEARCH) {
+    res.failure = "lost";
+  } else if (res.finalState == SSL_HOMING_DOCK) {
+    res.failure = "time-out";
+  } else {
+    res.failure = "hold-not-reached";
+  }
   res.standOffRms = sslservo::standOffRms(rows, scene.standOff, res.settledSteps);
   if (opt.traces) {
     sslservo::writeRows(opt.outputDir + "/run-" + std::to_string(d.run) + "-" + sslservo::methodName(method) + ".csv",
@@ -301,6 +400,21 @@ std::string num(double x, int digits)
   std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
   return buf;
 }
+
+// The failure reasons, in the order of the summary's columns.
+const std::vector<std::string> &failureReasons()
+{
+  static const std::vector<std::string> reasons = {"never-found",  "lost",      "hold-not-reached",
+                                                   "missed-board", "collision", "time-out"};
+  return reasons;
+}
+
+// Runs whose \e key lies in [lo, hi) with their docked fraction, for the outcome plot and the per-range table.
+struct Bin
+{
+  size_t n = 0, docked = 0;
+  std::vector<double> timeToDock;
+};
 
 // One line of the summary table: the runs of one method, in one water or in all ("all").
 std::string summaryLine(const std::string &method, const std::string &water, const std::vector<const Result *> &runs)
@@ -327,7 +441,11 @@ std::string summaryLine(const std::string &method, const std::string &water, con
      << " | " << nbRms << " | " << sslbench::fmt(sslbench::percentile(ttd, 50.), 1) << " | "
      << sslbench::fmt(sslbench::percentile(ttd, 90.), 1) << " | "
      << sslbench::fmt(sslbench::percentile(detection, 50.), 1) << " | " << nbDetected << "/" << runs.size() << " | "
-     << collisions << " | " << lost << " |\n";
+     << collisions << " | " << lost << " |";
+  for (const std::string &reason : failureReasons()) {
+    os << " " << std::count_if(runs.begin(), runs.end(), [&](const Result *r) { return r->failure == reason; }) << " |";
+  }
+  os << "\n";
   return os.str();
 }
 } // namespace
@@ -352,11 +470,12 @@ static int run(int argc, char **argv)
       vpIoTools::makeDirectory(opt.outputDir);
     }
     const vpCameraParameters cam = sslservo::scaledCamera(opt.width, opt.height);
+    const double coastalVisibility = vpSSLWaterModel::preset("coastal").getVisibility();
 
     // Jobs: run-major, so that with several threads the methods of one run progress together.
     std::vector<Draw> draws;
     for (int i = 0; i < opt.runs; ++i) {
-      draws.push_back(makeDraw(opt.seed, i, opt.maxCurrent));
+      draws.push_back(makeDraw(opt.seed, i, opt, cam, coastalVisibility));
     }
     const size_t nbMethods = opt.methods.size();
     const size_t nbJobs = draws.size() * nbMethods;
@@ -426,7 +545,7 @@ static int run(int argc, char **argv)
     }
     csv << "run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,"
            "stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,"
-           "collisions_outside_dock,lost_events,final_state,sim_time\n";
+           "collisions_outside_dock,lost_events,final_state,sim_time,start_in_view,failure\n";
     for (size_t j = 0; j < nbJobs; ++j) {
       const Draw &d = draws[j / nbMethods];
       const Result &r = results[j];
@@ -437,7 +556,7 @@ static int run(int argc, char **argv)
           << num(r.startRange, 3) << ',' << (r.docked ? 1 : 0) << ',' << num(r.timeToDock, 1) << ','
           << num(r.standOffRms, 4) << ',' << r.settledSteps << ',' << num(r.firstDetection, 1) << ','
           << r.collisionsOutsideDock << ',' << r.lostEvents << ',' << vpSSLHomingBehaviour::getStateName(r.finalState)
-          << ',' << num(r.simTime, 1) << '\n';
+          << ',' << num(r.simTime, 1) << ',' << (d.inView ? 1 : 0) << ',' << r.failure << '\n';
     }
     csv.close();
     if (!csv) {
@@ -447,13 +566,18 @@ static int run(int argc, char **argv)
     // summary.md
     std::ostringstream md;
     md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
-       << opt.height << ", time limit " << num(opt.timeLimit, 0) << " s, current up to " << num(opt.maxCurrent, 2)
-       << " m/s, auto-dock after " << num(opt.dockHold, 1) << " s within " << num(opt.dockRange, 2)
-       << " m of the stand-off and " << num(opt.dockAngle, 0) << " deg of the optical axis\n\n";
+       << opt.height << ", " << opt.water << " water, start range " << num(opt.startRangeMin, 1) << "-"
+       << num(opt.startRangeMax, 1) << " m, heading +-" << num(opt.startHeading, 0) << " deg, time limit "
+       << num(opt.timeLimit, 0) << " s, current up to " << num(opt.maxCurrent, 2) << " m/s, auto-dock after "
+       << num(opt.dockHold, 1) << " s within " << num(opt.dockRange, 2) << " m of the stand-off and "
+       << num(opt.dockAngle, 0) << " deg of the optical axis\n\n";
     md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
           "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
-          "lost-target events |\n";
-    md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "lost-target events |";
+    for (const std::string &reason : failureReasons()) {
+      md << " " << reason << " |";
+    }
+    md << "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (size_t m = 0; m < nbMethods; ++m) {
       for (const char *water : {"all", "clear", "coastal"}) {
         std::vector<const Result *> runs;
@@ -465,6 +589,60 @@ static int run(int argc, char **argv)
         md << summaryLine(sslservo::methodName(opt.methods[m]), water, runs);
       }
     }
+
+    // Success and time to dock by start range (1 m bins) and success by current (0.05 m/s bins), per method.
+    const double rangeBin = 1., currentBin = 0.05;
+    const size_t nbRangeBins = static_cast<size_t>(std::ceil(opt.startRangeMax / rangeBin));
+    const size_t nbCurrentBins = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.maxCurrent / currentBin)));
+    vpSSLPlot byRange("Docked by start range", "start range (m)", "docked fraction");
+    vpSSLPlot byCurrent("Docked by current", "current (m/s)", "docked fraction");
+    md << "\nBy start range (camera to target centre at the start): docked / runs, time to dock median (s)\n\n"
+       << "| method |";
+    for (size_t b = 0; b < nbRangeBins; ++b) {
+      md << " " << num(b * rangeBin, 0) << "-" << num((b + 1) * rangeBin, 0) << " m |";
+    }
+    md << "\n|---|";
+    for (size_t b = 0; b < nbRangeBins; ++b) {
+      md << "---|";
+    }
+    md << "\n";
+    for (size_t m = 0; m < nbMethods; ++m) {
+      std::vector<Bin> ranges(nbRangeBins), currents(nbCurrentBins);
+      for (size_t i = 0; i < draws.size(); ++i) {
+        const Result &r = results[i * nbMethods + m];
+        const size_t rb = std::min(nbRangeBins - 1, static_cast<size_t>(std::max(0., r.startRange) / rangeBin));
+        const size_t cb = std::min(nbCurrentBins - 1, static_cast<size_t>(draws[i].currentSpeed / currentBin));
+        for (Bin *b : {&ranges[rb], &currents[cb]}) {
+          ++b->n;
+          b->docked += r.docked ? 1 : 0;
+          b->timeToDock.push_back(r.timeToDock);
+        }
+      }
+      auto curve = [](const std::vector<Bin> &bins, double width, std::vector<double> &x, std::vector<double> &y) {
+        for (size_t b = 0; b < bins.size(); ++b) {
+          x.push_back((b + 0.5) * width);
+          y.push_back(bins[b].n ? static_cast<double>(bins[b].docked) / bins[b].n : NAN);
+        }
+      };
+      std::vector<double> xr, yr, xc, yc;
+      curve(ranges, rangeBin, xr, yr);
+      curve(currents, currentBin, xc, yc);
+      const std::string name = sslservo::methodName(opt.methods[m]);
+      byRange.addSeries(name, xr, yr, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
+      byCurrent.addSeries(name, xc, yc, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
+      md << "| " << name << " |";
+      for (const Bin &b : ranges) {
+        md << " " << b.docked << "/" << b.n << ", " << sslbench::fmt(sslbench::percentile(b.timeToDock, 50.), 1)
+           << " |";
+      }
+      md << "\n";
+    }
+    byRange.setYRange(0., 1.05);
+    byCurrent.setYRange(0., 1.05);
+    byRange.setXRange(0., nbRangeBins * rangeBin);
+    byCurrent.setXRange(0., nbCurrentBins * currentBin);
+    vpSSLPlot::saveStacked({byRange, byCurrent}, opt.outputDir + "/outcomes.png", 800, 300);
+
     const std::string mdPath = opt.outputDir + "/summary.md";
     std::ofstream mdFile(mdPath);
     mdFile << md.str();

@@ -33,8 +33,11 @@ behaviour drives the vehicle. Writes DIR/servo-<scenario>-<method>.csv and .png,
 Options:
   --scenario NAME      fig7 (target removed then put back), fig8 (target moved left then right),
                        fig9 (docking), field (coastal water, swaying target). Default fig7.
-  --method NAME        ssl (vpSSLTracker on the ssl3-a3 sheet), apriltag (36h11 sheet) or truth (perfect
-                       sensor: the ssl3-a3 landmarks projected at the true pose when in view). Default ssl.
+  --method NAME        ssl (vpSSLTracker on the ssl3-a3 sheet), apriltag (36h11 sheet, its corners and pose
+                       fused with the odometry by the tracker's particle filter), truth (perfect sensor: the
+                       ssl3-a3 landmarks projected at the true pose when in view), ssl-raw or apriltag-raw (the
+                       single-frame pose of each image, no fusion, nothing when the target is not seen).
+                       Default ssl.
   --duration S         Simulated seconds (default: fig7 300, fig8 200, fig9 90, field 120).
   --seed N             Seed of the sensors and the image noise (default 1).
   --output-dir DIR     Where the CSV and PNG go (default ".", created if needed).
@@ -86,8 +89,9 @@ Options parse(int argc, char **argv, bool &help)
       }
     } else if (a == "--method") {
       o.method = value();
-      if (o.method != "ssl" && o.method != "apriltag" && o.method != "truth") {
-        throw UsageError{"--method: unknown \"" + o.method + "\" (ssl, apriltag, truth)"};
+      sslservo::Method m;
+      if (!sslservo::parseMethod(o.method, m)) {
+        throw UsageError{"--method: unknown \"" + o.method + "\" (ssl, apriltag, truth, ssl-raw, apriltag-raw)"};
       }
     } else if (a == "--duration") {
       o.duration = parseDouble(a, value());

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # End-to-end check of tutorial-ssl-servo-monte-carlo: --help lists every option, bad options exit 2 with one line on
-# stderr, and a short run (2 runs, perfect sensor, no rendering) writes runs.csv and summary.md; 1 and 2 threads
-# give the same files.
+# stderr, a short run (2 runs, perfect sensor, no rendering) writes runs.csv, summary.md and outcomes.png, 1 and 2
+# threads give the same files; and a short fixed-seed mission (search from a start with the target out of view,
+# align, home, dock) docks every run with SSL, AprilTag (fused) and the perfect sensor.
 # Usage: servo_monte_carlo.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
 E2E_FAIL_FAST=1
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo-monte-carlo "$@"
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --runs --seed --methods --time-limit --max-current --threads --traces --output-dir --width --height \
-           --small --quiet --help ssl apriltag truth runs.csv summary.md; do
+           --small --quiet --help --start-range --start-heading --water ssl apriltag truth ssl-raw apriltag-raw \
+           runs.csv summary.md outcomes.png never-found lost hold-not-reached missed-board collision time-out; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
@@ -25,6 +27,10 @@ check_error "--runs" --runs 0
 check_error "--methods" --methods ssl,sift
 check_error "--time-limit" --time-limit -1
 check_error "needs a value" --seed
+check_error "--start-range" --start-range 3,2
+check_error "--start-range" --start-range 2
+check_error "--start-heading" --start-heading 181
+check_error "--water" --water turbid
 
 # A perfect sensor needs no image: 2 runs of 30 s simulated take well under a second.
 for threads in 1 2; do
@@ -34,7 +40,7 @@ for threads in 1 2; do
   [ ! -s "$WORK/err" ] || fail "--quiet run wrote on stderr: $(cat "$WORK/err")"
   csv="$out/runs.csv"
   [ -f "$csv" ] || fail "runs.csv missing"
-  head -1 "$csv" | grep -q "^run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,collisions_outside_dock,lost_events,final_state,sim_time$" \
+  head -1 "$csv" | grep -q "^run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,collisions_outside_dock,lost_events,final_state,sim_time,start_in_view,failure$" \
     || fail "runs.csv header: $(head -1 "$csv")"
   [ "$(($(wc -l < "$csv") - 1))" -eq 2 ] || fail "expected 2 rows in runs.csv, got $(($(wc -l < "$csv") - 1))"
   for run in 0 1; do
@@ -42,10 +48,24 @@ for threads in 1 2; do
     [ -s "$out/run-$run-truth.csv" ] || fail "--traces: run-$run-truth.csv missing"
   done
   awk -F, 'NR > 1 && ($13 != 0 && $13 != 1) { exit 1 }' "$csv" || fail "docked column is not 0/1: $(cat "$csv")"
+  # Every run starts with the target out of view; a run docks or names its failure.
+  awk -F, 'NR > 1 && $22 != 0 { exit 1 }' "$csv" || fail "a start with the target in view: $(cat "$csv")"
+  awk -F, 'NR > 1 && (($13 == 1) != ($23 == "")) { exit 1 }' "$csv" || fail "failure column: $(cat "$csv")"
+  [ -s "$out/outcomes.png" ] || fail "outcomes.png missing"
   [ -s "$out/summary.md" ] || fail "summary.md missing"
   grep -q "^| truth | all | [0-2]/2 | " "$out/summary.md" || fail "summary.md: no 'truth | all' row: $(cat "$out/summary.md")"
   grep -q "^| truth | all | " "$WORK/log-$threads" || fail "summary not on stdout"
 done
 cmp -s "$WORK/out-1/runs.csv" "$WORK/out-2/runs.csv" || fail "runs.csv differs between 1 and 2 threads"
 cmp -s "$WORK/out-1/summary.md" "$WORK/out-2/summary.md" || fail "summary.md differs between 1 and 2 threads"
+# The whole mission on a short fixed-seed run (320x240, clear still water, starts 2-2.5 m with the target out of
+# view): each method must find the target by searching and dock in both runs (measured: 2/2 each).
+out="$WORK/mission"
+"$BIN" --runs 2 --seed 3 --methods ssl,apriltag,truth --small --start-range 2,2.5 --water clear --max-current 0 \
+  --time-limit 90 --threads 2 --quiet --output-dir "$out" > "$WORK/log-mission" 2> "$WORK/err" \
+  || fail "mission run exit code $?: $(cat "$WORK/err")"
+for method in ssl apriltag truth; do
+  grep -q "^| $method | all | 2/2 | " "$out/summary.md" || fail "$method did not dock 2/2: $(cat "$out/summary.md")"
+done
+awk -F, 'NR > 1 && $17 + 0 <= 0 { exit 1 }' "$out/runs.csv" || fail "a target seen at the start: $(cat "$out/runs.csv")"
 e2e_finish

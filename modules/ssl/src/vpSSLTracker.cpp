@@ -309,6 +309,27 @@ double vpSSLTracker::apparentRadius(const vpHomogeneousMatrix &cMo, const vpSSLT
   return shortest;
 }
 
+double vpSSLTracker::innerCopyScale(size_t k, double u, double v, double radius) const
+{
+  // The pattern repeats at every scale p^k inside the landmark (paper Eq. 1): at close range, where the outer
+  // rings leave the image, the detector reads an inner copy of the landmark as the landmark. Only the prediction
+  // tells them apart: a radius p^k (k >= 1) times the predicted one, within a third of a ring step, is the copy.
+  if (m_state != SSL_TRACKER_ACQUIRED && m_state != SSL_TRACKER_TRACKING && m_state != SSL_TRACKER_LOST) {
+    return 1.;
+  }
+  const vpSSLTargetLandmark &l = m_target.getLandmark(k);
+  const double predicted = apparentRadius(m_filter.getMeanPose(), l, u, v);
+  if (!(radius > 0.) || !(predicted > 0.) || !std::isfinite(predicted) || !(l.p > 0.) || !(l.p < 1.)) {
+    return 1.;
+  }
+  const double steps = std::log(radius / predicted) / std::log(l.p);
+  const double k0 = std::round(steps);
+  if (k0 < 1. || k0 > 8. || std::fabs(steps - k0) > 1. / 3.) {
+    return 1.;
+  }
+  return std::pow(l.p, k0);
+}
+
 void vpSSLTracker::chooseScale()
 {
   if (!m_autoSmall) {
@@ -337,6 +358,7 @@ vpSSLTrackerState vpSSLTracker::process(const vpImage<unsigned char> &I)
   m_hypotheses.clear();
   std::fill(m_seen.begin(), m_seen.end(), false);
   if (match.found) {
+    std::vector<double> copyScale(m_target.size(), 1.);
     for (size_t k = 0; k < m_target.size(); ++k) {
       const vpSSLLandmark *l = m_detector.getMatchedLandmark(k);
       if (l == nullptr) {
@@ -345,12 +367,24 @@ vpSSLTrackerState vpSSLTracker::process(const vpImage<unsigned char> &I)
       vpSSLObservation o;
       o.label = static_cast<int>(k);
       undistort(l->u, l->v, o.u, o.v);
-      o.radius = l->radius;
+      copyScale[k] = innerCopyScale(k, o.u, o.v, l->radius);
+      o.radius = l->radius / copyScale[k];
       m_observations.push_back(o);
       m_seen[k] = true;
       vpPixelMeterConversion::convertPoint(m_cam, l->u, l->v, m_seenX[k], m_seenY[k]);
     }
     m_hypotheses = m_estimator.estimate(m_detector, m_cam);
+    // A position-only hypothesis places its landmark at the range of the radius read (Eq. 6): an inner copy read
+    // at p^k of the landmark's size puts it 1 / p^k too far, along the same ray.
+    for (vpSSLPoseHypothesis &h : m_hypotheses) {
+      if (h.positionOnly && h.landmark >= 0 && static_cast<size_t>(h.landmark) < copyScale.size() &&
+          copyScale[static_cast<size_t>(h.landmark)] != 1.) {
+        const double scale = copyScale[static_cast<size_t>(h.landmark)];
+        h.cMo.insert(h.cMo.getTranslationVector() * scale);
+        h.positionSigma *= scale;
+        h.depthSigma *= scale;
+      }
+    }
   }
   m_nbLandmarks = static_cast<unsigned int>(m_observations.size());
   const bool seen = !m_observations.empty() && !m_hypotheses.empty();

@@ -58,7 +58,11 @@ enum vpSSLTrackerState
      the orientation is unknown (getOrientationKnown()), when a landmark is predicted outside the image, or
      every setFullSearchPeriod() images, the whole image is searched instead;
   -# chooses the detector's scale (vpSSLDetector::setSmallLandmarkMode(), see below);
-  -# detects and identifies the target; the matched landmarks become labelled observations;
+  -# detects and identifies the target; the matched landmarks become labelled observations; while a
+     prediction exists (ACQUIRED, TRACKING, LOST), a landmark read at p^k (k >= 1, within a third of a ring
+     step) of its predicted apparent radius is an inner ring copy of it (the pattern repeats at every scale
+     inside, and close up the outer rings leave the image): its radius, and the range of its position-only
+     hypothesis, are scaled back by p^k (test/test_tracker_contact.cpp);
   -# initialises the filter from vpSSLPoseEstimator's hypotheses while searching or lost, updates it
      otherwise (the fresh hypotheses are passed as recovery when no particle explains the image); when only
      one or two landmarks are seen and the filter knows the orientation, their labels are dropped and each
@@ -247,6 +251,7 @@ private:
   bool heldLandmarkEstimate(vpTranslationVector &t) const;
   bool positionDisagrees() const;
   double apparentRadius(const vpHomogeneousMatrix &cMo, const vpSSLTargetLandmark &l, double u, double v) const;
+  double innerCopyScale(size_t k, double u, double v, double radius) const;
   double reprojectionError(const vpHomogeneousMatrix &cMo) const;
   void undistort(double u, double v, double &uu, double &vu) const;
 
