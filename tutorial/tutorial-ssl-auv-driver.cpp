@@ -95,7 +95,7 @@ public:
     vpImageConvert::convert(grey, I);
   }
   void close() override { init = false; }
-  //! The target's pose in the camera frame now.
+  //! The target's pose in the camera frame at the vehicle's current pose.
   vpHomogeneousMatrix cMt() const { return (m_auv.getOdometry() * m_auv.getCameraToVehicle()).inverse() * m_oMt; }
 
 private:
