@@ -1,28 +1,38 @@
 /*
   The whole detector (paper Sec. 3, Table 1) against ViSP's AprilTag detector and OpenCV's ArUco detector, on
-  the same rendered views: ssl3-a3 and an A3 AprilTag 36h11 sheet (vpSSLAprilTagSheet) at 1 m, slightly turned,
-  through a camera of the same field of view at 320x240, 640x480, 1280x720 and 1920x1080.
+  the same frames: one rendered view holding both the ssl3-a3 sheet and an A3 AprilTag 36h11 sheet
+  (vpSSLAprilTagSheet) side by side, 1 m away and slightly turned, through a camera of the same field of view at
+  320x240, 640x480, 1280x720 and 1920x1080; the same 640x480 view under water (vpSSLWaterModel "clear", the
+  sensor's noise); and ViSP's real 640x480 AprilTag photograph (no landmark: the clutter case). Each detector sees
+  the other's sheet as clutter.
 
-  Timed: vpSSLDetector::detect() full frame on one thread and on all of them (decimated matching pass, the
-  full-resolution default, and at 640x480 also the decimated pass, setDecimation(2)); the same with three 100x100
-  regions of interest around the landmarks at 640x480 (the paper's tracking mode); the reference matching
-  function alone at 640x480 (the scalar loops the SIMD kernel replaces); vpDetectorAprilTag 36h11 on one
-  thread with quad decimate 1 and 2; cv::aruco::detectMarkers with DICT_APRILTAG_36h11 on one thread; and
-  SSL and AprilTag on ViSP's real 640x480 AprilTag photograph (no landmark: the clutter case); and SSL and
-  AprilTag on the same 640x480 views under water (vpSSLWaterModel "clear", open water behind the sheet, the
-  sensor's noise), the frames the detectors meet on a vehicle.
+  Timed, on every frame: vpSSLDetector::detect() full frame (full-resolution matching, and setDecimation(2)) and
+  vpDetectorAprilTag 36h11 (quad decimate 2, its default, and 1), each on one thread and on all the cores
+  (the same count for both); cv::aruco::detectMarkers (DICT_APRILTAG_36h11, one thread); the reference matching
+  function alone at 640x480 (the scalar loops the SIMD kernel replaces). At 640x480, three 100x100 regions of
+  interest around the landmarks, in three modes:
+  - tracker fast path, regions centred on the previous landmarks: each is re-read from its centre, no matching;
+  - tracker fast path, regions 20 px off: what vpSSLDetector does there (re-read, matched on the image decimated
+    twice, or matched at full resolution) is counted and printed beside the row;
+  - the paper's ROI mode: no previous landmark (forgotten before each timed frame, untimed), so every region is
+    matched and searched for peaks, at the detector's resolution.
+  The periodic full search of the tracking mode is off in these rows (it is the full-frame row).
 
     ./bench-detector --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-  After Google Benchmark's own report, a table of medians (over every timed iteration), frames per second and
-  the ratio of each time to AprilTag's with decimate 2 on the frame of the same size, beside the paper's Table 1.
+  After Google Benchmark's own report, a table of medians (over every timed iteration), frames per second, and
+  the ratio of each time to AprilTag's on the same frame with the same thread count, quad decimate 2 and 1, from
+  this run only (empty when that AprilTag row was not run), beside the paper's Table 1.
   Reading: doc/benchmarks.md.
 */
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -41,10 +51,20 @@
 #include <visp3/ssl/vpSSLWaterModel.h>
 
 namespace {
-// 1 m in front of the camera, turned by a few degrees about each axis: the whole A3 sheet in view.
-vpHomogeneousMatrix viewPose()
+// The board 1 m in front of the camera, turned by a few degrees about each axis, and on it the ssl3-a3 target to
+// the right and the tag sheet to the left: both whole sheets in view at every size.
+vpHomogeneousMatrix boardPose()
 {
-  return vpHomogeneousMatrix(0.02, -0.01, 1.0, vpMath::rad(10.), vpMath::rad(-8.), vpMath::rad(5.));
+  return vpHomogeneousMatrix(0.02, -0.01, 1.0, vpMath::rad(5.), vpMath::rad(-4.), vpMath::rad(3.));
+}
+vpHomogeneousMatrix sslPose()
+{
+  return boardPose() * vpHomogeneousMatrix(0.30, 0., 0., 0., 0., 0.);
+}
+// The pose of the tag frame (vpSSLAprilTagSheet), its sheet centred 0.24 m left of the board's origin.
+vpHomogeneousMatrix tagPose()
+{
+  return boardPose() * vpHomogeneousMatrix(-0.24, 0., 0., 0., 0., 0.) * vpSSLAprilTagSheet::getSheetToTag();
 }
 
 // The same horizontal field of view (56 degrees) at every size.
@@ -54,58 +74,91 @@ vpCameraParameters camera(unsigned int width, unsigned int height)
   return vpCameraParameters(f, f, 0.5 * width - 0.5, 0.5 * height - 0.5);
 }
 
-struct Frames
+// Thread count of the "all cores" rows, the same for both detectors.
+unsigned int allThreads()
 {
-  vpImage<unsigned char> ssl, tag;
-  std::vector<vpRect> rois; // 100x100 around each landmark of the target
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+struct Frame
+{
+  vpImage<unsigned char> I;     // both sheets
+  std::vector<vpRect> rois;     // 100x100 around each landmark of the target
+  std::vector<vpRect> off;      // the same, 20 px to the right
+  vpImage<unsigned char> blank; // uniform grey of the same size (forgets the previous landmarks)
 };
 
-const Frames &frames(unsigned int width, unsigned int height)
+// Both sheets in one view: each rendered as reflectance and range, the nearer kept at each pixel; then the
+// 8-bit image, or with \e water the underwater image.
+void renderBoth(const vpCameraParameters &cam, unsigned int width, unsigned int height, const vpSSLWaterModel *water,
+                vpImage<unsigned char> &I)
 {
-  static std::map<std::pair<unsigned int, unsigned int>, Frames> cache;
-  auto it = cache.find({width, height});
+  vpSSLRenderer renderer(cam, width, height);
+  vpImage<float> reflectance, range, tagReflectance, tagRange;
+  renderer.setTarget(vpSSLTarget::ssl3a3());
+  renderer.render(sslPose(), reflectance, range);
+  renderer.setAprilTagSheet(vpSSLAprilTagSheet::a3(0));
+  renderer.render(tagPose(), tagReflectance, tagRange);
+  for (unsigned int i = 0; i < reflectance.getSize(); ++i) {
+    if (tagRange.bitmap[i] < range.bitmap[i]) {
+      reflectance.bitmap[i] = tagReflectance.bitmap[i];
+      range.bitmap[i] = tagRange.bitmap[i];
+    }
+  }
+  if (water != nullptr) {
+    water->apply(reflectance, range, cam, 0., 1, I);
+    return;
+  }
+  I.resize(height, width);
+  for (unsigned int i = 0; i < reflectance.getSize(); ++i) {
+    I.bitmap[i] = static_cast<unsigned char>(std::lround(255. * std::min(1.f, std::max(0.f, reflectance.bitmap[i]))));
+  }
+}
+
+// The frames by name: "WxH" (in air), "640x480 underwater", "640x480 AprilTag.pgm" (ViSP's photograph).
+const Frame &frame(const std::string &name)
+{
+  static std::map<std::string, Frame> cache;
+  auto it = cache.find(name);
   if (it != cache.end()) {
     return it->second;
   }
-  Frames &f = cache[{width, height}];
-  vpSSLRenderer renderer(camera(width, height), width, height);
-  renderer.setTarget(vpSSLTarget::ssl3a3());
-  renderer.render(viewPose(), f.ssl);
-  for (const vpImagePoint &c : renderer.projectLandmarks(viewPose())) {
-    f.rois.push_back(vpRect(c.get_u() - 50., c.get_v() - 50., 100., 100.));
+  Frame &f = cache[name];
+  if (name == "640x480 AprilTag.pgm") {
+    vpImageIo::read(f.I, std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/AprilTag.pgm");
+  } else {
+    unsigned int width = 0, height = 0;
+    std::sscanf(name.c_str(), "%ux%u", &width, &height);
+    const vpCameraParameters cam = camera(width, height);
+    const bool underwater = name.find("underwater") != std::string::npos;
+    const vpSSLWaterModel water = vpSSLWaterModel::preset("clear");
+    renderBoth(cam, width, height, underwater ? &water : nullptr, f.I);
+    vpSSLRenderer renderer(cam, width, height);
+    for (const vpImagePoint &c : renderer.projectLandmarks(sslPose())) {
+      f.rois.push_back(vpRect(c.get_u() - 50., c.get_v() - 50., 100., 100.));
+      f.off.push_back(vpRect(c.get_u() - 30., c.get_v() - 50., 100., 100.));
+    }
   }
-  // The tag sheet is rendered at the pose of its tag frame (vpSSLAprilTagSheet).
-  renderer.setAprilTagSheet(vpSSLAprilTagSheet::a3(0));
-  renderer.render(viewPose() * vpSSLAprilTagSheet::getSheetToTag(), f.tag);
+  f.blank.resize(f.I.getHeight(), f.I.getWidth(), 128);
   return f;
 }
 
-// The 640x480 views of frames() through clear water (attenuation, backscatter, blur, sensor noise).
-const Frames &underwaterFrames()
-{
-  static Frames f;
-  if (f.ssl.getSize() > 0) {
-    return f;
-  }
-  const unsigned int width = 640, height = 480;
-  const vpCameraParameters cam = camera(width, height);
-  vpSSLRenderer renderer(cam, width, height);
-  const vpSSLWaterModel water = vpSSLWaterModel::preset("clear");
-  vpImage<float> reflectance, range;
-  renderer.setTarget(vpSSLTarget::ssl3a3());
-  renderer.render(viewPose(), reflectance, range);
-  water.apply(reflectance, range, cam, 0., 1, f.ssl);
-  renderer.setAprilTagSheet(vpSSLAprilTagSheet::a3(0));
-  renderer.render(viewPose() * vpSSLAprilTagSheet::getSheetToTag(), reflectance, range);
-  water.apply(reflectance, range, cam, 0., 1, f.tag);
-  return f;
-}
-
-// Every timed iteration, by table row, for medians.
+// Every timed iteration, by table row, for medians; the frame and thread count of each row, for the ratios.
 std::map<std::string, std::vector<double>> &samples()
 {
   static std::map<std::string, std::vector<double>> s;
   return s;
+}
+struct RowInfo
+{
+  std::string frame;
+  unsigned int threads = 1;
+  std::string note; // what the row's regions of interest did
+};
+std::map<std::string, RowInfo> &rows()
+{
+  static std::map<std::string, RowInfo> r;
+  return r;
 }
 std::map<std::string, vpSSLDetectorTimes> &stageTimes()
 {
@@ -113,15 +166,35 @@ std::map<std::string, vpSSLDetectorTimes> &stageTimes()
   return s;
 }
 
-std::string sizeName(int width, int height)
+std::string threadsName(unsigned int threads)
 {
-  return std::to_string(width) + "x" + std::to_string(height);
+  return threads == 1 ? "1 thread" : std::to_string(threads) + " threads";
+}
+// The name of the row "DETECTOR | FRAME | N threads".
+std::string rowName(const std::string &detector, const std::string &frameName, unsigned int threads)
+{
+  return detector + " | " + frameName + " | " + threadsName(threads);
+}
+// The same, recorded with its frame and thread count.
+std::string row(const std::string &detector, const std::string &frameName, unsigned int threads)
+{
+  const std::string name = rowName(detector, frameName, threads);
+  rows()[name].frame = frameName;
+  rows()[name].threads = threads;
+  return name;
 }
 
-template <typename F> void timeLoop(benchmark::State &state, const std::string &row, F &&run)
+// Times run() per iteration; \e forget, when given, runs before each one with the timers paused.
+template <typename F>
+void timeLoop(benchmark::State &state, const std::string &name, F &&run, const std::function<void()> &forget = nullptr)
 {
-  std::vector<double> &s = samples()[row];
+  std::vector<double> &s = samples()[name];
   for (auto _ : state) {
+    if (forget) {
+      state.PauseTiming();
+      forget();
+      state.ResumeTiming();
+    }
     const auto t0 = std::chrono::steady_clock::now();
     run();
     s.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
@@ -129,40 +202,63 @@ template <typename F> void timeLoop(benchmark::State &state, const std::string &
   state.counters["fps"] = benchmark::Counter(1., benchmark::Counter::kIsIterationInvariantRate);
 }
 
+const std::vector<std::string> kFrames = {
+    "320x240", "640x480", "1280x720", "1920x1080", "640x480 underwater", "640x480 AprilTag.pgm"};
+
+enum RoiMode
+{
+  FULL_FRAME = 0,   // no region of interest
+  FAST_CENTRED = 1, // tracker fast path, regions centred on the previous landmarks
+  FAST_OFF = 2,     // tracker fast path, regions 20 px off
+  PAPER_ROI = 3     // the paper's ROI mode: every region matched, no previous landmark
+};
+
 /*
-  range: width, height, threads (0: all cores), regions of interest (0: none; 1: centred on the landmarks, which
-  are re-read from there without matching; 2: 20 px off them, too far for that, so the regions are matched as in
-  the paper), decimation of the matching pass (1/2).
+  range: frame (index in kFrames), threads (0: all cores), RoiMode, decimation of the matching pass (1/2).
 */
 void BM_SSL(benchmark::State &state)
 {
-  const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
-  const unsigned int threads = static_cast<unsigned int>(state.range(2));
-  const bool roi = state.range(3) != 0, off = state.range(3) == 2;
-  const unsigned int decimation = static_cast<unsigned int>(state.range(4));
-  const Frames &f = frames(width, height);
+  const std::string frameName = kFrames[static_cast<size_t>(state.range(0))];
+  const unsigned int threads = state.range(1) == 0 ? allThreads() : 1u;
+  const RoiMode mode = static_cast<RoiMode>(state.range(2));
+  const unsigned int decimation = static_cast<unsigned int>(state.range(3));
+  const Frame &f = frame(frameName);
+  const bool photo = frameName.find("AprilTag.pgm") != std::string::npos;
   vpSSLDetector detector;
   detector.setNbThreads(threads);
   detector.setDecimation(decimation);
-  if (roi) {
-    std::vector<vpRect> rois;
-    for (const vpRect &r : f.rois) {
-      rois.push_back(vpRect(r.getLeft() + (off ? 20. : 0.), r.getTop(), r.getWidth(), r.getHeight()));
-    }
-    detector.setRegionsOfInterest(rois);
-  }
-  if (!detector.detect(f.ssl) || !detector.getTargetMatch().found) {
+  detector.detect(f.I); // a full search first: the previous landmarks of the fast path
+  if (!photo && !detector.getTargetMatch().found) {
     state.SkipWithError("ssl3-a3 not identified in the rendered frame");
     return;
   }
-  const std::string row = std::string("SSL ") +
-                          (roi ? (off ? "3 ROIs 100x100 off by 20 px " : "3 ROIs 100x100 ") : "full frame ") +
-                          sizeName(width, height) + (threads == 1 ? " 1 thread" : " all threads") +
-                          (decimation == 2 ? ", decimation 2" : "");
+  std::string detectorName = "SSL full frame", note;
+  if (mode != FULL_FRAME) {
+    detector.setFullSearchPeriod(0);
+    detector.setRegionsOfInterest(mode == FAST_OFF ? f.off : f.rois);
+    if (mode == PAPER_ROI) {
+      detector.detect(f.blank);
+    }
+    detector.detect(f.I);
+    const size_t matched = detector.getMatchedRegions().size(), map = detector.getMapRegions().size();
+    const size_t reread = f.rois.size() - matched;
+    const size_t decimated = decimation == 2 ? matched : matched - map, full = decimation == 2 ? 0 : map;
+    if (!detector.getTargetMatch().found || (mode == PAPER_ROI && matched != f.rois.size())) {
+      state.SkipWithError("ssl3-a3 not identified from the regions of interest");
+      return;
+    }
+    detectorName = mode == FAST_CENTRED ? "SSL tracker fast path, 3 ROIs 100x100 centred"
+                   : mode == FAST_OFF   ? "SSL tracker fast path, 3 ROIs 100x100 20 px off"
+                                        : "SSL paper ROI mode, 3 ROIs 100x100 matched";
+    note = std::to_string(reread) + " re-read, " + std::to_string(decimated) + " matched decimated, " +
+           std::to_string(full) + " matched at full resolution";
+  }
+  const std::string name = row(detectorName + (decimation == 2 ? ", decimation 2" : ""), frameName, threads);
+  rows()[name].note = note;
   vpSSLDetectorTimes sum;
   long n = 0;
-  timeLoop(state, row, [&] {
-    detector.detect(f.ssl);
+  auto run = [&] {
+    detector.detect(f.I);
     const vpSSLDetectorTimes &t = detector.getTimes();
     sum.normalization += t.normalization;
     sum.matching += t.matching;
@@ -171,8 +267,9 @@ void BM_SSL(benchmark::State &state)
     sum.identification += t.identification;
     sum.total += t.total;
     ++n;
-  });
-  vpSSLDetectorTimes &mean = stageTimes()[row];
+  };
+  timeLoop(state, name, run, mode == PAPER_ROI ? std::function<void()>([&] { detector.detect(f.blank); }) : nullptr);
+  vpSSLDetectorTimes &mean = stageTimes()[name];
   const double k = n > 0 ? 1. / n : 0.;
   mean.normalization = sum.normalization * k;
   mean.matching = sum.matching * k;
@@ -189,91 +286,38 @@ void BM_SSL(benchmark::State &state)
 
 void BM_ReferenceMatching(benchmark::State &state)
 {
-  const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
-  const Frames &f = frames(width, height);
+  const Frame &f = frame("640x480");
   const vpSSLMatchingFunction match(40, 0.5);
   vpImage<int> M;
-  timeLoop(state, "Reference matching only " + sizeName(width, height), [&] {
-    match.computeReference(f.ssl, M);
+  timeLoop(state, row("Reference matching only", "640x480", 1), [&] {
+    match.computeReference(f.I, M);
     benchmark::DoNotOptimize(M.bitmap);
   });
 }
 
-// range: width, height, quad decimate.
+// range: frame (index in kFrames), threads (0: all cores), quad decimate.
 void BM_AprilTag(benchmark::State &state)
 {
-  const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
-  const Frames &f = frames(width, height);
+  const std::string frameName = kFrames[static_cast<size_t>(state.range(0))];
+  const unsigned int threads = state.range(1) == 0 ? allThreads() : 1u;
   vpDetectorAprilTag detector(vpDetectorAprilTag::TAG_36h11);
-  detector.setAprilTagNbThreads(1);
+  detector.setAprilTagNbThreads(static_cast<int>(threads));
   detector.setAprilTagQuadDecimate(static_cast<float>(state.range(2)));
-  vpImage<unsigned char> I = f.tag; // detect() takes a non-const image
-  if (!detector.detect(I) || detector.getNbObjects() != 1) {
-    state.SkipWithError("AprilTag not detected in the rendered frame");
-    return;
-  }
-  timeLoop(state, "AprilTag 36h11 decimate " + std::to_string(state.range(2)) + " " + sizeName(width, height),
-           [&] { benchmark::DoNotOptimize(detector.detect(I)); });
-}
-
-// ViSP's own 640x480 AprilTag photograph (real camera, several tags, clutter): AprilTag and SSL (no landmark).
-void BM_AprilTagImage(benchmark::State &state)
-{
-  vpImage<unsigned char> I;
-  vpImageIo::read(I, std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/AprilTag.pgm");
-  const std::string size = sizeName(static_cast<int>(I.getWidth()), static_cast<int>(I.getHeight()));
-  if (state.range(0) <= 0) {
-    vpSSLDetector detector;
-    detector.setNbThreads(1);
-    detector.setDecimation(state.range(0) == 0 ? 1 : 2);
-    timeLoop(state,
-             "SSL full frame " + size + " 1 thread, AprilTag.pgm" + (state.range(0) == 0 ? "" : ", decimation 2"),
-             [&] { detector.detect(I); });
-    return;
-  }
-  vpDetectorAprilTag detector(vpDetectorAprilTag::TAG_36h11);
-  detector.setAprilTagNbThreads(1);
-  detector.setAprilTagQuadDecimate(static_cast<float>(state.range(0)));
-  timeLoop(state, "AprilTag 36h11 decimate " + std::to_string(state.range(0)) + " " + size + ", AprilTag.pgm",
-           [&] { benchmark::DoNotOptimize(detector.detect(I)); });
-}
-
-// range: 0 SSL, 1 SSL with decimation 2, 2 AprilTag decimate 2, 3 AprilTag decimate 1; on the underwater views.
-void BM_Underwater(benchmark::State &state)
-{
-  const Frames &f = underwaterFrames();
-  const int which = static_cast<int>(state.range(0));
-  if (which < 2) {
-    vpSSLDetector detector;
-    detector.setNbThreads(1);
-    detector.setDecimation(which == 0 ? 1 : 2);
-    if (!detector.detect(f.ssl) || !detector.getTargetMatch().found) {
-      state.SkipWithError("ssl3-a3 not identified in the underwater frame");
-      return;
-    }
-    timeLoop(state,
-             std::string("SSL full frame 640x480 1 thread") + (which == 0 ? "" : ", decimation 2") + ", underwater",
-             [&] { detector.detect(f.ssl); });
-    return;
-  }
-  vpDetectorAprilTag detector(vpDetectorAprilTag::TAG_36h11);
-  detector.setAprilTagNbThreads(1);
-  detector.setAprilTagQuadDecimate(which == 2 ? 2.f : 1.f);
-  vpImage<unsigned char> I = f.tag;
+  vpImage<unsigned char> I = frame(frameName).I; // detect() takes a non-const image
   if (!detector.detect(I)) {
-    state.SkipWithError("AprilTag not detected in the underwater frame");
+    state.SkipWithError("AprilTag not detected in the frame");
     return;
   }
-  timeLoop(state, std::string("AprilTag 36h11 decimate ") + (which == 2 ? "2" : "1") + " 640x480, underwater",
+  timeLoop(state, row("AprilTag 36h11 decimate " + std::to_string(state.range(2)), frameName, threads),
            [&] { benchmark::DoNotOptimize(detector.detect(I)); });
 }
 
+// range: frame (index in kFrames).
 void BM_ArUco(benchmark::State &state)
 {
-  const int width = static_cast<int>(state.range(0)), height = static_cast<int>(state.range(1));
-  const Frames &f = frames(width, height);
+  const std::string frameName = kFrames[static_cast<size_t>(state.range(0))];
   cv::Mat image;
-  vpImageConvert::convert(f.tag, image);
+  vpImageConvert::convert(frame(frameName).I, image);
   const cv::Ptr<cv::aruco::Dictionary> dictionary = cv::aruco::getPredefinedDictionary(cv::aruco::DICT_APRILTAG_36h11);
   const cv::Ptr<cv::aruco::DetectorParameters> parameters = cv::aruco::DetectorParameters::create();
   std::vector<std::vector<cv::Point2f>> corners;
@@ -286,50 +330,42 @@ void BM_ArUco(benchmark::State &state)
     state.SkipWithError("ArUco did not detect the tag in the rendered frame");
     return;
   }
-  timeLoop(state, "cv::aruco APRILTAG_36h11 " + sizeName(width, height),
+  timeLoop(state, row("cv::aruco APRILTAG_36h11", frameName, 1),
            [&] { cv::aruco::detectMarkers(image, dictionary, corners, ids, parameters); });
   cv::setNumThreads(threads);
 }
 
-const std::vector<std::vector<int64_t>> kSizes = {{320, 240}, {640, 480}, {1280, 720}, {1920, 1080}};
-
 void sslArgs(benchmark::internal::Benchmark *b)
 {
-  for (const auto &s : kSizes) {
+  for (int64_t i = 0; i < static_cast<int64_t>(kFrames.size()); ++i) {
     for (int threads : {1, 0}) {
-      b->Args({s[0], s[1], threads, 0, 1});
+      b->Args({i, threads, FULL_FRAME, 1});
+      if (kFrames[static_cast<size_t>(i)] != "320x240") { // 15 px landmarks: below the decimated pass's envelope
+        b->Args({i, threads, FULL_FRAME, 2});
+      }
     }
   }
-  b->Args({640, 480, 1, 1, 1});
-  b->Args({640, 480, 1, 2, 1});
-  b->Args({640, 480, 0, 1, 1});
-  // The decimated matching pass (setDecimation(2)), like AprilTag's quad decimate.
-  b->Args({640, 480, 1, 0, 2});
-  b->Args({640, 480, 0, 0, 2});
-  b->Args({640, 480, 1, 1, 2});
-  b->Args({640, 480, 1, 2, 2});
+  for (int64_t mode : {FAST_CENTRED, FAST_OFF, PAPER_ROI}) {
+    for (int64_t decimation : {1, 2}) {
+      b->Args({1, 1, mode, decimation});
+    }
+  }
 }
 void aprilTagArgs(benchmark::internal::Benchmark *b)
 {
-  for (const auto &s : kSizes) {
-    for (int decimate : {1, 2}) {
-      b->Args({s[0], s[1], decimate});
+  for (int64_t i = 0; i < static_cast<int64_t>(kFrames.size()); ++i) {
+    for (int threads : {1, 0}) {
+      for (int decimate : {2, 1}) {
+        b->Args({i, threads, decimate});
+      }
     }
-  }
-}
-void sizeArgs(benchmark::internal::Benchmark *b)
-{
-  for (const auto &s : kSizes) {
-    b->Args({s[0], s[1]});
   }
 }
 
 BENCHMARK(BM_SSL)->Apply(sslArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ReferenceMatching)->Args({640, 480})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ReferenceMatching)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AprilTag)->Apply(aprilTagArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_AprilTagImage)->Arg(-1)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Underwater)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ArUco)->Apply(sizeArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ArUco)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 double median(std::vector<double> v)
 {
@@ -341,69 +377,74 @@ double median(std::vector<double> v)
 }
 
 // The paper's Table 1 (frames per second), where it has the same case.
-std::string paperFps(const std::string &row)
+std::string paperFps(const std::string &name, const RowInfo &info)
 {
-  if (row.rfind("SSL full frame 640x480 1 thread", 0) == 0 && row.find("AprilTag.pgm") == std::string::npos &&
-      row.find("underwater") == std::string::npos) {
+  if (info.threads != 1 || name.find("decimation 2") != std::string::npos) {
+    return "";
+  }
+  if (name.rfind("SSL full frame |", 0) == 0 && info.frame == "640x480") {
     return "2.1 (P-M) / 2.8 (P-IV)";
   }
-  if (row.rfind("SSL full frame 320x240 1 thread", 0) == 0) {
+  if (name.rfind("SSL full frame |", 0) == 0 && info.frame == "320x240") {
     return "8.9 (P-M) / 11.1 (P-IV)";
   }
-  if (row.rfind("SSL 3 ROIs 100x100 640x480", 0) == 0 || row.rfind("SSL 3 ROIs 100x100 off by 20 px 640x480", 0) == 0) {
+  if (name.rfind("SSL paper ROI mode", 0) == 0 && info.frame == "640x480") {
     return "6.8 (P-M, 640x480)";
   }
   return "";
 }
 
+// t / AprilTag's median on the same frame with the same thread count and quad decimate \e decimate, this run.
+std::string ratio(double ms, const RowInfo &info, int decimate)
+{
+  const auto at =
+      samples().find(rowName("AprilTag 36h11 decimate " + std::to_string(decimate), info.frame, info.threads));
+  if (at == samples().end() || at->second.empty() || ms <= 0.) {
+    return "";
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.2f", ms / median(at->second));
+  return buf;
+}
+
 void printTable()
 {
-  std::printf("\nSIMD target: %s\n\n", vpSSLMatchingFunction::getSimdTarget().c_str());
-  std::printf("| %-44s | %9s | %8s | %12s | %-24s |\n", "case", "median ms", "fps", "t / AT dec 2",
-              "paper Table 1 fps");
-  std::printf("|%s|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(11, '-').c_str(),
-              std::string(10, '-').c_str(), std::string(14, '-').c_str(), std::string(26, '-').c_str());
+  std::printf("\nSIMD target: %s; all cores: %u threads\n\n", vpSSLMatchingFunction::getSimdTarget().c_str(),
+              allThreads());
+  std::printf("| %-58s | %-20s | %-10s | %9s | %8s | %9s | %9s | %-22s |\n", "detector", "frame", "threads",
+              "median ms", "fps", "t / AT d2", "t / AT d1", "paper Table 1 fps");
+  std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(60, '-').c_str(), std::string(22, '-').c_str(),
+              std::string(12, '-').c_str(), std::string(11, '-').c_str(), std::string(10, '-').c_str(),
+              std::string(11, '-').c_str(), std::string(11, '-').c_str(), std::string(24, '-').c_str());
   for (const auto &entry : samples()) {
+    const RowInfo &info = rows()[entry.first];
     const double ms = median(entry.second);
-    std::string ratio;
-    for (const auto &s : kSizes) {
-      const std::string size = sizeName(static_cast<int>(s[0]), static_cast<int>(s[1]));
-      if (entry.first.find(size) == std::string::npos) {
-        continue;
-      }
-      const std::string suffix = entry.first.find("AprilTag.pgm") != std::string::npos ? ", AprilTag.pgm"
-                                 : entry.first.find("underwater") != std::string::npos ? ", underwater"
-                                                                                       : "";
-      auto at = samples().find("AprilTag 36h11 decimate 2 " + size + suffix);
-      if (at != samples().end() && ms > 0.) {
-        char buf[32];
-        std::snprintf(buf, sizeof(buf), "%.2f", ms / median(at->second));
-        ratio = buf;
-      }
+    const std::string detector = entry.first.substr(0, entry.first.find(" | "));
+    const bool aprilTag = detector.rfind("AprilTag", 0) == 0;
+    std::printf("| %-58s | %-20s | %-10s | %9.3f | %8.1f | %9s | %9s | %-22s |\n", detector.c_str(), info.frame.c_str(),
+                threadsName(info.threads).c_str(), ms, ms > 0. ? 1000. / ms : 0.,
+                aprilTag ? "" : ratio(ms, info, 2).c_str(), aprilTag ? "" : ratio(ms, info, 1).c_str(),
+                paperFps(entry.first, info).c_str());
+  }
+
+  std::printf("\nRegions of interest (640x480, 1 thread): what the detector did in them, and the speed-up over the "
+              "full frame at the same decimation\n");
+  for (const auto &entry : rows()) {
+    if (entry.second.note.empty() || samples()[entry.first].empty()) {
+      continue;
     }
-    std::printf("| %-44s | %9.3f | %8.1f | %12s | %-24s |\n", entry.first.c_str(), ms, ms > 0. ? 1000. / ms : 0.,
-                ratio.c_str(), paperFps(entry.first).c_str());
+    const bool decimated = entry.first.find("decimation 2") != std::string::npos;
+    const auto full = samples().find(rowName(std::string("SSL full frame") + (decimated ? ", decimation 2" : ""),
+                                             entry.second.frame, entry.second.threads));
+    const double roi = median(samples()[entry.first]);
+    std::printf("| %-58s | %-52s | %5.1fx |\n", entry.first.substr(0, entry.first.find(" | ")).c_str(),
+                entry.second.note.c_str(), full != samples().end() && roi > 0. ? median(full->second) / roi : 0.);
   }
-  const auto full = samples().find("SSL full frame 640x480 1 thread");
-  const auto roi = samples().find("SSL 3 ROIs 100x100 640x480 1 thread");
-  if (full != samples().end() && roi != samples().end() && median(roi->second) > 0.) {
-    std::printf("\nTracking mode (3 ROIs) speed-up over the full frame, 640x480, 1 thread: %.1fx\n",
-                median(full->second) / median(roi->second));
-  }
-  const auto off = samples().find("SSL 3 ROIs 100x100 off by 20 px 640x480 1 thread");
-  if (full != samples().end() && off != samples().end() && median(off->second) > 0.) {
-    std::printf("The same with the regions 20 px off the landmarks (matched, as in the paper): %.1fx\n",
-                median(full->second) / median(off->second));
-  }
-  const auto full2 = samples().find("SSL full frame 640x480 1 thread, decimation 2");
-  const auto roi2 = samples().find("SSL 3 ROIs 100x100 640x480 1 thread, decimation 2");
-  if (full2 != samples().end() && roi2 != samples().end() && median(roi2->second) > 0.) {
-    std::printf("The same with decimation 2: %.1fx\n", median(full2->second) / median(roi2->second));
-  }
+
   std::printf("\nSSL stages (mean ms): normalisation, matching, peaks, radius (ring reading), identification\n");
   for (const auto &entry : stageTimes()) {
     const vpSSLDetectorTimes &t = entry.second;
-    std::printf("| %-44s | %6.3f | %6.3f | %6.3f | %6.3f | %6.3f | total %6.3f |\n", entry.first.c_str(),
+    std::printf("| %-90s | %6.3f | %6.3f | %6.3f | %6.3f | %6.3f | total %6.3f |\n", entry.first.c_str(),
                 t.normalization, t.matching, t.peaks, t.radius, t.identification, t.total);
   }
 }

@@ -24,6 +24,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/gui/vpDisplayX.h>
+#include <visp3/ssl/vpSSLCameraFile.h>
 
 namespace ssltut {
 
@@ -51,6 +52,18 @@ inline long long parseInteger(const std::string &name, const std::string &text, 
                      "], got \"" + text + "\"");
   }
   return v;
+}
+
+/*!
+  The value of the option at argv[i], which is argv[i + 1]; \e i moves on to it.
+  \exception UsageError "OPTION needs a value" when the option is the last argument.
+*/
+inline std::string optionValue(int argc, char **argv, int &i)
+{
+  if (i + 1 >= argc) {
+    throw UsageError(std::string(argv[i]) + " needs a value");
+  }
+  return argv[++i];
 }
 
 /*!
@@ -139,6 +152,23 @@ inline std::unique_ptr<vpDisplay> openDisplay(vpImage<vpRGBa> &I, const char *pr
             << (display != nullptr && *display != '\0' ? "cannot be opened" : "unset") << "): " << fallback
             << std::endl;
   return nullptr;
+}
+
+/*!
+  The project's default camera, data/camera/camera-640x480.xml, with its image size in \e width and \e height;
+  with \e half, the same field of view at half the size (320x240).
+  \exception vpException when the file cannot be read.
+*/
+inline vpCameraParameters defaultCamera(unsigned int &width, unsigned int &height, bool half)
+{
+  vpCameraParameters cam =
+      vpSSLCameraFile::load(std::string(VISP_SSL_DATA_DIR) + "/camera/camera-640x480.xml", "Camera", &width, &height);
+  if (half) {
+    width /= 2;
+    height /= 2;
+    cam.initPersProjWithoutDistortion(cam.get_px() / 2., cam.get_py() / 2., cam.get_u0() / 2., cam.get_v0() / 2.);
+  }
+  return cam;
 }
 
 //! Longest path a numbered image pattern may expand to (bytes): ViSP's readers keep names in fixed buffers.

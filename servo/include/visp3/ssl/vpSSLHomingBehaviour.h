@@ -64,7 +64,8 @@ enum vpSSLHomingState
     homing.apply(auv);                          // vpRobot::ARTICULAR_FRAME: vehicle axes
   }
   \endcode
-  See doc/servo.md and test/test_servo_behaviour.cpp.
+  See doc/servo.md, test/test_servo_behaviour.cpp and tutorial-ssl-auv-driver.cpp (a vpRobot driver skeleton for an
+  AUV driven by this behaviour).
 */
 class VISP_SSL_EXPORT vpSSLHomingBehaviour
 {

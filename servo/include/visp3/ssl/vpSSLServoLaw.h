@@ -135,7 +135,7 @@ public:
     Configures the law for a robot that moves the camera itself (vpSimulatorCamera, a robot arm's end
     effector): vMc = identity, all six axes enabled with weight 1 and ViSP's pseudo-inverse threshold 1e-6 (a
     camera that follows every twist at once needs the weak direction to reach the facing pose). The "vehicle"
-    command is then the camera twist.
+    command is then the camera twist. See tutorial-ssl-ibvs.cpp (vpSimulatorCamera through rendered images).
   */
   void setCameraRobot();
 
