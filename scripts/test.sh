@@ -45,7 +45,7 @@ phase "API reference (doxygen, a warning fails)"
 run_logged build/build.log cmake --build build --target doc
 
 phase "install into install/ and build example/consumer against it"
-rm -rf install build-consumer
+rm -rf install build-consumer build-consumer-tree
 run_logged build/build.log cmake --install build --prefix "$VISP_SSL_ROOT/install"
 run_logged build-consumer/build.log cmake -S example/consumer -B build-consumer -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$VISP_SSL_ROOT/install"
@@ -57,12 +57,12 @@ pc_dir=$(dirname "$(find install -name visp_ssl.pc | head -n 1)")
 run_logged build-consumer/build.log c++ example/consumer/main.cpp -o build-consumer/ssl-consumer-pkgconfig \
   $(PKG_CONFIG_PATH="$VISP_SSL_ROOT/$pc_dir" pkg-config --cflags --libs visp_ssl)
 build-consumer/ssl-consumer-pkgconfig
-run_logged build-consumer/build.log cmake -S example/consumer -B build-consumer/from-build-tree \
+run_logged build-consumer/build.log cmake -S example/consumer -B build-consumer-tree \
   -DCMAKE_BUILD_TYPE=Release -DVISP_SSL_DIR="$VISP_SSL_ROOT/build"
-run_logged build-consumer/build.log cmake --build build-consumer/from-build-tree -j"$JOBS"
-build-consumer/from-build-tree/ssl-consumer
+run_logged build-consumer/build.log cmake --build build-consumer-tree -j"$JOBS"
+build-consumer-tree/ssl-consumer
 # An installed tutorial reads the installed data (share/visp_ssl), not the source tree's.
-VISP_SSL_DATA_DIR='' install/bin/tutorial-ssl-detector-pose --output build-consumer/detector-pose \
+env -u DISPLAY VISP_SSL_DATA_DIR='' install/bin/tutorial-ssl-detector-pose --output build-consumer/detector-pose \
   > build-consumer/detector-pose.txt 2>&1
 grep -q "^Input: .*/install/share/visp_ssl/images/" build-consumer/detector-pose.txt ||
   { echo "test.sh: the installed tutorial-ssl-detector-pose does not read the installed data" >&2; exit 1; }
