@@ -84,10 +84,11 @@ inline bool isVideoFile(const std::string &path)
 }
 
 /*!
-  Grey frames of a video file (OpenCV's FFmpeg backend) or a camera (whichever backend OpenCV picks) through
-  cv::VideoCapture. Every failure is a vpException naming the source and, for a file, the frame: a source that
-  cannot be opened, no frame at all, a video that ends two frames or more before the number its header announces
-  (truncated, or a frame that cannot be decoded), a frame beyond the limits of vpSSLImageIo::check().
+  Grey frames of a video file (OpenCV's FFmpeg backend) or a camera (OpenCV's V4L2 backend, which converts more
+  pixel formats than vpV4l2Grabber, e.g. MJPG) through cv::VideoCapture. Every failure is a vpException naming the
+  source and, for a file, the frame: a source that cannot be opened, no frame at all, a video that ends two frames or
+  more before the number its header announces (truncated, or a frame that cannot be decoded), a frame beyond the limits
+  of vpSSLImageIo::check().
 */
 class VideoInput
 {
@@ -111,7 +112,9 @@ public:
     setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0); // AV_LOG_QUIET
     bool opened = false;
     try {
-      opened = m_camera ? m_capture.open(std::atoi(source.c_str())) : m_capture.open(source, cv::CAP_FFMPEG);
+      // V4L2 for a camera: OpenCV's other backends (GStreamer) leak when they probe a missing device.
+      opened =
+          m_camera ? m_capture.open(std::atoi(source.c_str()), cv::CAP_V4L2) : m_capture.open(source, cv::CAP_FFMPEG);
     } catch (const cv::Exception &) {
       opened = false;
     }

@@ -34,8 +34,9 @@ landmarks, the range and the tracker state. Click in the window to quit.
 
 Options:
   --input SOURCE        /dev/videoN: a V4L2 camera through vpV4l2Grabber; N (a number): camera N
-                        through cv::VideoCapture (any device OpenCV opens); anything else: a video
-                        file (.avi, .mp4, ... whatever OpenCV's FFmpeg decodes) read to its end.
+                        through cv::VideoCapture (OpenCV's V4L2 backend, which also decodes MJPG
+                        cameras); anything else: a video file (.avi, .mp4, ... whatever OpenCV's
+                        FFmpeg decodes) read to its end.
                         Default: /dev/video0.
   --intrinsic FILE      Camera parameters, ViSP XML (default: DATA/camera/camera-640x480.xml; use
                         your camera's calibration, ranges scale with its focal length).
