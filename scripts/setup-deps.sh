@@ -12,6 +12,8 @@ packages=(
   # components keeps the install short: the full ViSP stack with its recommends takes over 5 minutes.
   libvisp-core-dev libvisp-io-dev libvisp-vision-dev libvisp-detection-dev libvisp-robot-dev
   libvisp-visual-features-dev libvisp-vs-dev libvisp-gui-dev
+  # vpV4l2Grabber for tutorial-ssl-detector-live; OpenCV's videoio reads video files and other cameras.
+  libvisp-sensor-dev libopencv-videoio-dev
   # libvisp-dev is needed too: it is the package that ships ViSP's CMake config (VISPConfig.cmake), without
   # which find_package(VISP) fails. With --no-install-recommends it only adds the remaining small component
   # -dev packages (about 19 in all), not the heavy recommends.

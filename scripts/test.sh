@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start, part 2: installs the Debian packages, builds everything in Release (build/) and runs every test
 # with ctest; builds the API reference (doxygen); installs into install/ and builds the downstream example
-# (example/consumer) against it; then
+# (example/consumer) against it, through pkg-config too, and from the build tree; then
 # builds again with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/) and runs the tests there;
 # then builds the libFuzzer targets with clang and runs each on its corpus and for 12 s (scripts/fuzz.sh,
 # FUZZ_SECONDS to change); last, checks that the C++ files are formatted (scripts/format.sh --check).
@@ -45,12 +45,27 @@ phase "API reference (doxygen, a warning fails)"
 run_logged build/build.log cmake --build build --target doc
 
 phase "install into install/ and build example/consumer against it"
-rm -rf install build-consumer
+rm -rf install build-consumer build-consumer-tree
 run_logged build/build.log cmake --install build --prefix "$VISP_SSL_ROOT/install"
 run_logged build-consumer/build.log cmake -S example/consumer -B build-consumer -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$VISP_SSL_ROOT/install"
 run_logged build-consumer/build.log cmake --build build-consumer -j"$JOBS"
 build-consumer/ssl-consumer
+# The same program through pkg-config (visp_ssl.pc), and the CMake package from the build tree.
+pc_dir=$(dirname "$(find install -name visp_ssl.pc | head -n 1)")
+# shellcheck disable=SC2046  # pkg-config's flags are meant to split
+run_logged build-consumer/build.log c++ example/consumer/main.cpp -o build-consumer/ssl-consumer-pkgconfig \
+  $(PKG_CONFIG_PATH="$VISP_SSL_ROOT/$pc_dir" pkg-config --cflags --libs visp_ssl)
+build-consumer/ssl-consumer-pkgconfig
+run_logged build-consumer/build.log cmake -S example/consumer -B build-consumer-tree \
+  -DCMAKE_BUILD_TYPE=Release -DVISP_SSL_DIR="$VISP_SSL_ROOT/build"
+run_logged build-consumer/build.log cmake --build build-consumer-tree -j"$JOBS"
+build-consumer-tree/ssl-consumer
+# An installed tutorial reads the installed data (share/visp_ssl), not the source tree's.
+env -u DISPLAY VISP_SSL_DATA_DIR='' install/bin/tutorial-ssl-detector-pose --output build-consumer/detector-pose \
+  > build-consumer/detector-pose.txt 2>&1
+grep -q "^Input: .*/install/share/visp_ssl/images/" build-consumer/detector-pose.txt ||
+  { echo "test.sh: the installed tutorial-ssl-detector-pose does not read the installed data" >&2; exit 1; }
 
 if [ "$sanitize" -eq 1 ]; then
   phase "configure and build, ASan+UBSan (build-asan/)"

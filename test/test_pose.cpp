@@ -45,6 +45,7 @@ bool isTrue(const vpHomogeneousMatrix &est, const vpHomogeneousMatrix &gt)
 
 struct Detection
 {
+  vpImage<unsigned char> I;
   bool ok = false;
   std::vector<vpSSLLandmark> landmarks;
   vpSSLTargetMatch match;
@@ -52,10 +53,9 @@ struct Detection
 
 Detection renderAndDetect(vpSSLRenderer &renderer, vpSSLDetector &detector, const vpHomogeneousMatrix &cMo)
 {
-  vpImage<unsigned char> I;
-  renderer.render(cMo, I);
   Detection d;
-  detector.detect(I);
+  renderer.render(cMo, d.I);
+  detector.detect(d.I);
   d.landmarks = detector.getLandmarks();
   d.match = detector.getTargetMatch();
   d.ok = d.match.found;
@@ -171,6 +171,20 @@ TEST(Pose, ThreeLandmarkPoseOnRenderedViews)
     EXPECT_LT(angleDeg(best.cMo, gt), 3.) << what;
     EXPECT_LT(rangeError(best.cMo, gt), 0.02) << what;
     EXPECT_LT(best.ellipseError, 0.15) << what;
+
+    // The same image through vpSSLDetector::detect(I, cam, cMo_vec), shaped as vpDetectorAprilTag's: the pose
+    // within the same tolerances, its position within 2 % of the range, and nothing reported as position-only.
+    std::vector<vpHomogeneousMatrix> cMo_vec, cMo_vec2;
+    std::vector<double> errors, errors2;
+    std::vector<vpTranslationVector> positions(1); // filled on purpose: detect() clears it
+    ASSERT_TRUE(detector.detect(d.I, cam, cMo_vec, &cMo_vec2, &errors, &errors2, &positions)) << what;
+    ASSERT_EQ(cMo_vec.size(), 1u) << what;
+    ASSERT_EQ(errors.size(), 1u) << what;
+    EXPECT_EQ(cMo_vec2.size(), errors2.size()) << what;
+    EXPECT_TRUE(positions.empty()) << what;
+    EXPECT_LT(angleDeg(cMo_vec[0], gt), 3.) << what;
+    EXPECT_LT((cMo_vec[0].getTranslationVector() - gt.getTranslationVector()).frobeniusNorm(), 0.02 * v.range) << what;
+    EXPECT_LT(errors[0], 0.5) << what;
   }
 }
 
@@ -198,6 +212,16 @@ TEST(Pose, OneLandmarkRangeFromApparentRadius)
     EXPECT_NEAR(h.cMo.getTranslationVector().frobeniusNorm(), trueRange, 0.03 * trueRange) << range;
     EXPECT_NEAR(h.cMo[0][3], gt[0][3], 0.03 * trueRange) << range;
     EXPECT_NEAR(h.cMo[1][3], gt[1][3], 0.03 * trueRange) << range;
+
+    // Through vpSSLDetector::detect(I, cam, cMo_vec): no full pose (its identity rotation is an assumption), the
+    // position apart.
+    std::vector<vpHomogeneousMatrix> cMo_vec(1), cMo_vec2(1); // filled on purpose: detect() clears them
+    std::vector<vpTranslationVector> positions;
+    EXPECT_FALSE(detector.detect(d.I, cam, cMo_vec, &cMo_vec2, nullptr, nullptr, &positions)) << range;
+    EXPECT_TRUE(cMo_vec.empty()) << range;
+    EXPECT_TRUE(cMo_vec2.empty()) << range;
+    ASSERT_EQ(positions.size(), 1u) << range;
+    EXPECT_LT((positions[0] - h.cMo.getTranslationVector()).frobeniusNorm(), 1e-9) << range;
   }
 }
 
@@ -383,4 +407,42 @@ TEST(Pose, RankingPicksTheTruePoseOnNoisyUnderwaterDetections)
   EXPECT_GE(truthAmong, (9 * three) / 10);
   EXPECT_EQ(missedWithTruthAmong, 0);
   EXPECT_GE(firstRanked, firstPaper);
+}
+
+// vpSSLDetector::detect(I, cam, cMo_vec) (its full poses are checked in ThreeLandmarkPoseOnRenderedViews and
+// OneLandmarkRangeFromApparentRadius): never a position-only result among the full poses, nothing without a target.
+TEST(DetectorPose, TargetSeenByItsBigLandmarkOnlyGivesNoFullPose)
+{
+  // ssl3-a3 at 3 m through an 800 px camera: the small landmarks (13 px of radius) are below the default mode's
+  // envelope, only B is read, and the pose is not given.
+  const vpSSLTarget target = vpSSLTarget::ssl3a3();
+  const vpCameraParameters cam = camera();
+  vpSSLRenderer renderer(cam, 640, 480);
+  renderer.setTarget(target);
+  vpSSLDetector detector(target);
+  const vpHomogeneousMatrix gt = sslt::lookAt(3., 10., 0., 0.);
+  vpImage<unsigned char> I;
+  renderer.render(gt, I);
+  std::vector<vpHomogeneousMatrix> cMo_vec;
+  std::vector<vpTranslationVector> positions;
+  EXPECT_FALSE(detector.detect(I, cam, cMo_vec, nullptr, nullptr, nullptr, &positions));
+  ASSERT_TRUE(detector.getTargetMatch().found);
+  ASSERT_LT(detector.getTargetMatch().nbMatched, 3u);
+  EXPECT_TRUE(cMo_vec.empty());
+  ASSERT_EQ(positions.size(), 1u);
+  // The position is B's centre.
+  const vpSSLTargetLandmark &B = target.getLandmark(static_cast<size_t>(target.findLandmark("B")));
+  const vpTranslationVector cB = gt * vpTranslationVector(B.x, B.y, B.z);
+  EXPECT_LT((positions[0] - cB).frobeniusNorm(), 0.03 * 3.);
+}
+
+TEST(DetectorPose, NoTargetNoPose)
+{
+  vpImage<unsigned char> I(480, 640, 128);
+  vpSSLDetector detector;
+  std::vector<vpHomogeneousMatrix> cMo_vec(1);
+  std::vector<vpTranslationVector> positions(1);
+  EXPECT_FALSE(detector.detect(I, camera(), cMo_vec, nullptr, nullptr, nullptr, &positions));
+  EXPECT_TRUE(cMo_vec.empty());
+  EXPECT_TRUE(positions.empty());
 }

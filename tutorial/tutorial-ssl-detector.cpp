@@ -18,9 +18,10 @@
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_input.h"
 
 namespace {
-const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN [options]
+const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN_OR_VIDEO [options]
 
 Detects circular self-similar landmarks (SSL) and identifies the target in each image.
 
@@ -28,7 +29,9 @@ Options:
   --input PATH        An image file (PNG, JPEG, PGM/PPM, BMP; at most 16384 px a side and
                       2^26 pixels, doc/input-limits.md), or a numbered sequence as a pattern
                       with one %d (e.g. images/%06d.png): from the first number found in
-                      0..100000 to the first missing one. Required.
+                      0..100000 to the first missing one, or a video file (.avi, .mp4, .mkv,
+                      .mov, .m4v, .mpg, .mpeg, .webm; whatever OpenCV's FFmpeg decodes), read
+                      to its end; its frames are named <video name>-<frame, 6 digits>. Required.
   --camera FILE       Camera parameters (ViSP XML, vpXmlParserCamera). Enables cMo (the best
                       P3P pose hypothesis when the target's three landmarks are seen, paper
                       Sec. 3.2) and range_m (|t| of that pose, else Eq. 6 from the radii).
@@ -56,7 +59,9 @@ Options:
 
 Exit status: 0 when every image was read and every annotated image written, 1 when an
 image could not be read or an annotated image not written (the others are still
-processed) or on any other runtime failure, 2 on a bad option, camera file, target file or
+processed), when a video cannot be opened, has no frame, or ends before the frame count its
+header announces (a truncated file, a frame that cannot be decoded: the frames before it are
+processed), or on any other runtime failure, 2 on a bad option, camera file, target file or
 output folder. Every error is one line on stderr.
 )";
 
@@ -269,6 +274,7 @@ int run(int argc, char **argv)
   if (isSequence) {
     ssltut::checkPattern("--input", input);
   }
+  const bool isVideo = !isSequence && ssltut::isVideoFile(input);
   vpImage<vpRGBa> annotated;
   std::unique_ptr<vpDisplay> window_;
   if (display) {
@@ -332,9 +338,33 @@ int run(int argc, char **argv)
       return 1;
     }
   }
+  ssltut::VideoInput video;
+  if (isVideo) {
+    try {
+      video.open(input);
+    } catch (const vpException &e) {
+      std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
+      return 1;
+    }
+  }
   for (bool done = false; !done; ++frame) {
     std::string name, path = input;
-    if (isSequence) {
+    if (isVideo) {
+      if (maxFrames >= 0 && frame >= maxFrames) {
+        break;
+      }
+      // A frame that cannot be decoded ends the video: there is no next frame to go on with.
+      try {
+        if (!video.read(I)) {
+          break;
+        }
+      } catch (const vpException &e) {
+        std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
+        status = 1;
+        break;
+      }
+      name = vpIoTools::getNameWE(input) + ssltut::expandPattern("-%06d", frame);
+    } else if (isSequence) {
       path = ssltut::expandPattern(input, index++);
       if (!vpIoTools::checkFilename(path) || (maxFrames >= 0 && frame >= maxFrames)) {
         break;
@@ -342,11 +372,13 @@ int run(int argc, char **argv)
     } else {
       done = true;
     }
-    name = vpIoTools::getName(path);
     // vpSSLImageIo checks the header's size before decoding and says why an image cannot be read (ViSP's PNG
     // reader trusts the header and leaks on a corrupt file).
     try {
-      vpSSLImageIo::read(I, path);
+      if (!isVideo) {
+        name = vpIoTools::getName(path);
+        vpSSLImageIo::read(I, path);
+      }
       vpSSLImageIo::check(I, name.c_str());
     } catch (const vpException &e) {
       std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
@@ -383,7 +415,7 @@ int run(int argc, char **argv)
       vpDisplay::flush(annotated);
     }
     if (!outputDir.empty()) {
-      const std::string base = name.substr(0, name.find_last_of('.'));
+      const std::string base = isVideo ? name : name.substr(0, name.find_last_of('.'));
       const std::string out = outputDir + "/" + base + ".png";
       try {
         if (vpIoTools::checkDirectory(out)) {

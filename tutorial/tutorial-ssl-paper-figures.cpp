@@ -27,6 +27,7 @@
 #include "ssl_apriltag_baseline.h"
 
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_input.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-paper-figures [options]
@@ -53,7 +54,9 @@ The tables behind the plots go to figures.md and stdout (Markdown).
 
 Options:
   --output-dir DIR   Where to write (default: ssl-paper-figures).
-  --sequence DIR     Sequence for Fig. 5 (default: the sample data/sequences/approach-clear).
+  --sequence DIR     Sequence for Fig. 5 (default: the sample data/sequences/approach-clear; data/ is
+                     $VISP_SSL_DATA_DIR if set, else share/visp_ssl of an installed tree, else the
+                     source tree's).
   --quick            Fewer points, 2 x 2 samples per pixel and fewer timing runs (for tests).
   --help             This help.
 
@@ -412,7 +415,7 @@ void table1(bool quick, std::ostream &md)
 static int run(int argc, char **argv)
 {
   std::string dir = "ssl-paper-figures";
-  std::string sequence = std::string(VISP_SSL_DATA_DIR) + "/sequences/approach-clear";
+  std::string sequence = ssltut::dataDir() + "/sequences/approach-clear";
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];

@@ -22,9 +22,11 @@
 #include <visp3/ssl/vpSSLTracker.h>
 
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_input.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-tracker --sequence DIR [options]
+       tutorial-ssl-tracker --video FILE --camera XML [options]
 
 Tracks the target of a recorded sequence (doc/sequence-format.md) with vpSSLTracker:
 detector in regions of interest, single-frame pose hypotheses and a particle filter driven by the
@@ -33,7 +35,13 @@ present, its odometry columns. Prints one line per frame and writes a CSV of the
 the ground truth (when the sequence has it).
 
 Options:
-  --sequence DIR        Recorded sequence folder. Required.
+  --sequence DIR        Recorded sequence folder. Required unless --video.
+  --video FILE          A video file instead (.avi, .mp4, ...; whatever OpenCV's FFmpeg decodes),
+                        read to its end: no odometry, no ground truth, t = frame / the video's
+                        frame rate (1 fps when it announces none). Needs --camera.
+  --camera XML          With --video: the camera's parameters, ViSP XML (vpXmlParserCamera).
+  --camera-name NAME    With --video: the camera's name inside the XML file (default: Camera).
+  --target NAME|FILE    With --video: built-in target name or target file (default: ssl3-a3).
   --csv FILE            CSV written ("-": standard output, the per-frame lines then go to stderr;
                         default: DIR/ssl-tracker.csv with --output-dir DIR, else no CSV). Columns: frame, t, state, nb_points, full_search,
                         small_mode, orientation_known, tx ty tz tux tuy tuz (estimated cMo,
@@ -68,8 +76,9 @@ Options:
   --help                This help.
 
 Exit status: 0 on success, 1 when the sequence cannot be read or is out of the limits of
-doc/input-limits.md (an error in the middle of it stops the run; the frames before it are in
-the CSV), when the CSV or an annotated image cannot be written whole (a full device) or on any
+doc/input-limits.md, or the video cannot be opened, has no frame or ends before the frame
+count its header announces (an error in the middle of it stops the run; the frames before it
+are in the CSV), when the CSV or an annotated image cannot be written whole (a full device) or on any
 other runtime failure, 2 on a bad option. Every error is one line on stderr.
 )";
 
@@ -181,6 +190,7 @@ int run(int argc, char **argv)
 {
   bool csvSet = false;
   std::string sequence, csvPath, outputDir, smallMode = "auto";
+  std::string videoPath, cameraFile, cameraName = "Camera", targetName = "ssl3-a3";
   bool display = false, useOdometry = true, quiet = false, summary = false;
   unsigned int particles = 1000, fullSearch = 10;
   long seed = 1, maxFrames = -1;
@@ -200,6 +210,14 @@ int run(int argc, char **argv)
       return 0;
     } else if (a == "--sequence") {
       sequence = value();
+    } else if (a == "--video") {
+      videoPath = value();
+    } else if (a == "--camera") {
+      cameraFile = value();
+    } else if (a == "--camera-name") {
+      cameraName = value();
+    } else if (a == "--target") {
+      targetName = value();
     } else if (a == "--csv") {
       csvPath = value();
       csvSet = true;
@@ -234,8 +252,15 @@ int run(int argc, char **argv)
       fail("unknown option \"" + a + "\" (see --help)", 2);
     }
   }
-  if (sequence.empty()) {
-    fail("--sequence is required (see --help)", 2);
+  const bool isVideo = !videoPath.empty();
+  if (sequence.empty() && !isVideo) {
+    fail("--sequence is required, or --video (see --help)", 2);
+  }
+  if (!sequence.empty() && isVideo) {
+    fail("--sequence and --video: give one of them (see --help)", 2);
+  }
+  if (isVideo && cameraFile.empty()) {
+    fail("--video needs --camera (see --help)", 2);
   }
   if (csvSet && csvPath.empty()) {
     fail("option --csv: empty file name", 2);
@@ -257,17 +282,30 @@ int run(int argc, char **argv)
   }
 
   vpSSLSequenceReader reader;
+  ssltut::VideoInput video;
   vpSSLTarget target;
+  vpCameraParameters cam;
   std::unique_ptr<vpSSLTracker> trackerPtr;
-  try {
-    reader.open(sequence);
-    // A relative target path is the sequence folder's, as in every tool (vpSSLSequenceReader::getTargetPath()).
-    target = vpSSLTarget::fromName(reader.getTargetPath());
-    trackerPtr.reset(new vpSSLTracker(target, reader.getCameraParameters(), vpHomogeneousMatrix(reader.getInfo().vMc)));
-  } catch (const vpException &e) {
-    fail(sequence + ": " + e.getStringMessage(), 1);
+  if (isVideo) {
+    ssltut::loadCameraAndTarget(cameraFile, cameraName, targetName, cam, target);
+    try {
+      video.open(videoPath);
+    } catch (const vpException &e) {
+      fail(e.getStringMessage(), 1);
+    }
+    trackerPtr.reset(new vpSSLTracker(target, cam));
+  } else {
+    try {
+      reader.open(sequence);
+      // A relative target path is the sequence folder's, as in every tool (vpSSLSequenceReader::getTargetPath()).
+      target = vpSSLTarget::fromName(reader.getTargetPath());
+      cam = reader.getCameraParameters();
+      trackerPtr.reset(new vpSSLTracker(target, cam, vpHomogeneousMatrix(reader.getInfo().vMc)));
+    } catch (const vpException &e) {
+      fail(sequence + ": " + e.getStringMessage(), 1);
+    }
   }
-  const vpCameraParameters &cam = reader.getCameraParameters();
+  const double fps = isVideo && video.fps() > 0. ? video.fps() : 1.;
   vpSSLTracker &tracker = *trackerPtr;
   try {
     tracker.getFilter().setNbParticles(particles);
@@ -322,7 +360,15 @@ int run(int argc, char **argv)
   int status = 0;
   while (maxFrames < 0 || nbFrames < maxFrames) {
     try {
-      if (!reader.next(frame, I)) {
+      if (isVideo) {
+        // A video has neither odometry nor ground truth: only the frame and its time.
+        frame = vpSSLSequenceFrame();
+        frame.index = static_cast<unsigned int>(video.frameIndex());
+        frame.t = video.frameIndex() / fps;
+        if (!video.read(I)) {
+          break;
+        }
+      } else if (!reader.next(frame, I)) {
         break;
       }
     } catch (const vpException &e) {
@@ -336,7 +382,8 @@ int run(int argc, char **argv)
       state = (useOdometry && frame.hasOdometry) ? tracker.track(I, vpHomogeneousMatrix(frame.oMv)) : tracker.track(I);
     } catch (const vpException &e) {
       // The rows before it stay in the CSV, which is closed below.
-      std::cerr << "tutorial-ssl-tracker: " << reader.getImagePath() << ": " << e.getStringMessage() << std::endl;
+      std::cerr << "tutorial-ssl-tracker: " << (isVideo ? videoPath : reader.getImagePath()) << ": "
+                << e.getStringMessage() << std::endl;
       status = 1;
       break;
     }

@@ -205,6 +205,43 @@ public:
   */
   static double range(const vpSSLLandmark &landmark, double radius, const vpCameraParameters &cam);
 
+  /*!
+    Detects the landmarks and the target in \e I (detect(const vpImage<unsigned char> &)), then gives the target's
+    pose the way vpDetectorAprilTag::detect(I, tagSize, cam, cMo_vec) gives the tags': a ViSP user swaps one detector
+    for the other. The sizes come from the target model (getTarget()), so there is no size argument. The pose is
+    vpSSLPoseEstimator's best hypothesis (paper Sec. 3.2): with three or more landmarks of the target matched, P3P
+    (or vpPose with four or more) refined by virtual visual servoing.
+
+    A position-only result (one or two landmarks matched, paper cases 1 and 2: a range from Eq. 6, no orientation)
+    is never put in \e cMo_vec; it goes to \e positions.
+
+    \param I : grey image.
+    \param cam : camera model (px, py > 0).
+    \param cMo_vec : the target's full pose (target frame in the camera frame), one element when it was estimated,
+    else empty. Cleared first.
+    \param cMo_vec2 : if not nullptr, the second best full pose of the same view (another P3P solution, which the
+    tracker's filter may still prefer), one element when there is one, else empty.
+    \param projErrors : if not nullptr, the RMS distance between the detected and the projected centres of each
+    pose of \e cMo_vec (px).
+    \param projErrors2 : if not nullptr, the same for \e cMo_vec2.
+    \param positions : if not nullptr, when only a position is known, one element: the position in the camera
+    frame (m) of the centre of the biggest matched landmark of the target (getMatchedLandmark()); else empty.
+    \return true when \e cMo_vec holds a full pose.
+    \exception vpException on a bad image, as detect(const vpImage<unsigned char> &).
+
+    \code
+    vpSSLDetector detector; // ssl3-a3: the landmark sizes are the target's
+    std::vector<vpHomogeneousMatrix> cMo_vec;
+    if (detector.detect(I, cam, cMo_vec)) {
+      vpDisplay::displayFrame(I, cMo_vec[0], cam, 0.1, vpColor::none, 3);
+    }
+    \endcode
+    See tutorial-ssl-detector-pose.cpp, a port of ViSP's tutorial-apriltag-detector.cpp.
+  */
+  bool detect(const vpImage<unsigned char> &I, const vpCameraParameters &cam, std::vector<vpHomogeneousMatrix> &cMo_vec,
+              std::vector<vpHomogeneousMatrix> *cMo_vec2 = nullptr, std::vector<double> *projErrors = nullptr,
+              std::vector<double> *projErrors2 = nullptr, std::vector<vpTranslationVector> *positions = nullptr);
+
 private:
   // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
   struct MatchMap
