@@ -163,8 +163,8 @@ TEST_F(Rosbag, MissingTopicNamesTheBagAndTheTopicsOfThatType)
     reader.selectTopics("/camera/image_rect", "/camera/camera_info");
     FAIL() << "no exception";
   } catch (const vpException &e) {
-    EXPECT_EQ(e.getStringMessage(), bag + ": /camera/image_rect: no such topic in the bag (sensor_msgs/Image "
-                                          "topics: /camera/image_raw)");
+    EXPECT_EQ(e.getStringMessage(), bag + ": /camera/image_rect: no such topic in the bag (sensor_msgs/Image or "
+                                          "sensor_msgs/CompressedImage topics: /camera/image_raw)");
   }
   try {
     reader.selectTopics("/camera/image_raw", "/odom");

@@ -81,7 +81,8 @@ public:
       if (std::find(types.begin(), types.end(), t.type) != types.end())
         ofType += (ofType.empty() ? "" : ", ") + t.name;
     }
-    throw vpException(vpException::badValue, where(topic) + "no such topic in the bag (" + types[0] +
+    const std::string typeNames = types[0] + (types.size() > 1 ? " or " + types[1] : std::string());
+    throw vpException(vpException::badValue, where(topic) + "no such topic in the bag (" + typeNames +
                                                  " topics: " + (ofType.empty() ? std::string("none") : ofType) + ")");
   }
 
