@@ -128,16 +128,7 @@ TEST_F(Rosbag, Rep103OdometryBecomesNorthEastDownAndForwardStarboardDown)
   // A vehicle 1 m East, 2 m North, 0.5 m up, facing East: 2 m North, 1 m East, 0.5 m above the origin (z = -0.5),
   // its starboard pointing South and its keel down.
   const vpHomogeneousMatrix enu(vpTranslationVector(1., 2., 0.5), vpRotationMatrix());
-  vpRotationMatrix R;
-  R[0][0] = 0.;
-  R[0][1] = -1.;
-  R[0][2] = 0.;
-  R[1][0] = 1.;
-  R[1][1] = 0.;
-  R[1][2] = 0.;
-  R[2][0] = 0.;
-  R[2][1] = 0.;
-  R[2][2] = 1.;
+  const vpRotationMatrix R({0, -1, 0, 1, 0, 0, 0, 0, 1});
   expectNear(toNedFrd(enu), vpHomogeneousMatrix(vpTranslationVector(2., 1., -0.5), R), 0.);
 }
 

@@ -65,15 +65,57 @@ inline void checkNewOutput(const std::string &folder)
   }
 }
 
-//! The sequence.json of a recording: \e target, \e vMc, source "recorded".
-inline vpSSLSequenceInfo recordingInfo(const std::string &target, const vpPoseVector &vMc)
+/*!
+  The options both recording tutorials take for the sequence they write: --output, --target (default ssl3-a3) and
+  --camera-to-vehicle (default 0 0 0 0 0 0, needed with odometry).
+*/
+struct RecordingOptions
 {
-  vpSSLSequenceInfo info;
-  info.target = target;
-  info.vMc = vMc;
-  info.source = "recorded";
-  return info;
-}
+  std::string output;
+  std::string target = "ssl3-a3";
+  vpPoseVector vMc;
+  bool mountGiven = false;
+
+  //! Takes option \e a when it is one of the three, its value from \e value(); false for any other option.
+  template <typename Value> bool parse(const std::string &a, Value value)
+  {
+    if (a == "--output") {
+      output = value();
+    } else if (a == "--target") {
+      target = value();
+      if (target.empty()) {
+        throw UsageError("option --target: empty name");
+      }
+    } else if (a == "--camera-to-vehicle") {
+      vMc = parseMount("option " + a, value());
+      mountGiven = true;
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  /*!
+    \exception UsageError when \e odometry is set (by option \e odometryOption) without --camera-to-vehicle: the
+    tracker needs the camera's pose on the vehicle to use the odometry.
+  */
+  void checkMount(bool odometry, const std::string &odometryOption) const
+  {
+    if (odometry && !mountGiven) {
+      throw UsageError(odometryOption + " needs --camera-to-vehicle (the camera's pose on the vehicle)");
+    }
+  }
+
+  //! The sequence.json of the recording: source "recorded".
+  vpSSLSequenceInfo info() const
+  {
+    vpSSLSequenceInfo info;
+    info.target = target;
+    info.vMc = vMc;
+    info.source = "recorded";
+    return info;
+  }
+};
 
 } // namespace ssltut
 

@@ -84,9 +84,8 @@ bool isDevice(const std::string &input)
 
 int run(int argc, char **argv)
 {
-  std::string input, cameraXml, cameraName = "Camera", output, odometryCsv, target = "ssl3-a3";
-  vpPoseVector vMc;
-  bool mountGiven = false;
+  std::string input, cameraXml, cameraName = "Camera", odometryCsv;
+  ssltut::RecordingOptions recording;
   double rate = 0., startTime = 0.;
   long long first = 0, frames = -1;
   for (int i = 1; i < argc; ++i) {
@@ -100,21 +99,15 @@ int run(int argc, char **argv)
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       return 0;
+    } else if (recording.parse(a, value)) {
     } else if (a == "--input") {
       input = value();
     } else if (a == "--camera") {
       cameraXml = value();
     } else if (a == "--camera-name") {
       cameraName = value();
-    } else if (a == "--output") {
-      output = value();
     } else if (a == "--odometry") {
       odometryCsv = value();
-    } else if (a == "--camera-to-vehicle") {
-      vMc = ssltut::parseMount("option " + a, value());
-      mountGiven = true;
-    } else if (a == "--target") {
-      target = value();
     } else if (a == "--rate") {
       rate = ssltut::parseNumber("option " + a, value(), 1e-3, 1e6);
     } else if (a == "--start-time") {
@@ -127,15 +120,10 @@ int run(int argc, char **argv)
       throw ssltut::UsageError("unknown option \"" + a + "\" (see --help)");
     }
   }
-  if (input.empty() || cameraXml.empty() || output.empty()) {
+  if (input.empty() || cameraXml.empty() || recording.output.empty()) {
     throw ssltut::UsageError("--input, --camera and --output are required (see --help)");
   }
-  if (!odometryCsv.empty() && !mountGiven) {
-    throw ssltut::UsageError("--odometry needs --camera-to-vehicle (the camera's pose on the vehicle)");
-  }
-  if (target.empty()) {
-    throw ssltut::UsageError("option --target: empty name");
-  }
+  recording.checkMount(!odometryCsv.empty(), "--odometry");
   const bool device = isDevice(input), pattern = !device && input.find('%') != std::string::npos;
   if (pattern) {
     ssltut::checkPattern("option --input", input);
@@ -145,7 +133,7 @@ int run(int argc, char **argv)
   }
 
   // Everything the user gave is checked before the first image is written.
-  ssltut::checkNewOutput(output);
+  ssltut::checkNewOutput(recording.output);
   unsigned int xmlWidth = 0, xmlHeight = 0;
   const vpCameraParameters cam = vpSSLCameraFile::load(cameraXml, cameraName, &xmlWidth, &xmlHeight);
   vpSSLOdometryTrack odometry;
@@ -239,7 +227,7 @@ int run(int argc, char **argv)
       frame.oMv.buildFrom(odometry.interpolate(t));
     }
     if (!writer.isOpen()) {
-      writer.open(output, cam, ssltut::recordingInfo(target, vMc));
+      writer.open(recording.output, cam, recording.info());
     }
     if (image.channels() == 1) {
       vpImage<unsigned char> I;
@@ -255,7 +243,7 @@ int run(int argc, char **argv)
   if (writer.isOpen()) {
     writer.close();
   }
-  std::cout << kProgram << ": " << n << " frames written to " << output
+  std::cout << kProgram << ": " << n << " frames written to " << recording.output
             << (odometry.size() > 0 ? " with odometry" : " without odometry") << (g_interrupted ? " (interrupted)" : "")
             << std::endl;
   return 0;

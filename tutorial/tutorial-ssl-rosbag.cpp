@@ -53,9 +53,9 @@ const char *kProgram = "tutorial-ssl-rosbag";
 
 int run(int argc, char **argv)
 {
-  std::string bag, imageTopic, infoTopic, odometryTopic, output, target = "ssl3-a3";
-  bool list = false, mountGiven = false;
-  vpPoseVector vMc;
+  std::string bag, imageTopic, infoTopic, odometryTopic;
+  bool list = false;
+  ssltut::RecordingOptions recording;
   vpSSLRosbagReader::vpOdometryConvention axes = vpSSLRosbagReader::ODOMETRY_REP103;
   long long maxFrames = -1;
   for (int i = 1; i < argc; ++i) {
@@ -69,6 +69,7 @@ int run(int argc, char **argv)
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       return 0;
+    } else if (recording.parse(a, value)) {
     } else if (a == "--bag") {
       bag = value();
     } else if (a == "--list") {
@@ -85,13 +86,6 @@ int run(int argc, char **argv)
         throw ssltut::UsageError("option --odometry-axes: expected rep103 or ned, got \"" + v + "\"");
       }
       axes = v == "ned" ? vpSSLRosbagReader::ODOMETRY_AS_IS : vpSSLRosbagReader::ODOMETRY_REP103;
-    } else if (a == "--camera-to-vehicle") {
-      vMc = ssltut::parseMount("option " + a, value());
-      mountGiven = true;
-    } else if (a == "--target") {
-      target = value();
-    } else if (a == "--output") {
-      output = value();
     } else if (a == "--max-frames") {
       maxFrames = ssltut::parseInteger("option " + a, value(), 1, 100000000);
     } else {
@@ -101,18 +95,13 @@ int run(int argc, char **argv)
   if (bag.empty()) {
     throw ssltut::UsageError("--bag is required (see --help)");
   }
-  if (!list && (imageTopic.empty() || infoTopic.empty() || output.empty())) {
+  if (!list && (imageTopic.empty() || infoTopic.empty() || recording.output.empty())) {
     throw ssltut::UsageError("--image-topic, --info-topic and --output are required to convert (or --list)");
   }
-  if (!odometryTopic.empty() && !mountGiven) {
-    throw ssltut::UsageError("--odometry-topic needs --camera-to-vehicle (the camera's pose on the vehicle)");
-  }
-  if (target.empty()) {
-    throw ssltut::UsageError("option --target: empty name");
-  }
+  recording.checkMount(!odometryTopic.empty(), "--odometry-topic");
 
   if (!list) {
-    ssltut::checkNewOutput(output);
+    ssltut::checkNewOutput(recording.output);
   }
   vpSSLRosbagReader reader;
   reader.setOdometryConvention(axes);
@@ -130,15 +119,16 @@ int run(int argc, char **argv)
 
   reader.selectTopics(imageTopic, infoTopic, odometryTopic);
   vpSSLSequenceWriter writer;
-  writer.open(output, reader.getCameraParameters(), ssltut::recordingInfo(target, vMc));
+  writer.open(recording.output, reader.getCameraParameters(), recording.info());
   vpSSLSequenceFrame frame;
   vpImage<vpRGBa> I;
   while ((maxFrames < 0 || writer.getFrameCount() < maxFrames) && reader.acquire(frame, I)) {
     writer.write(frame, I);
   }
   writer.close();
-  std::cout << kProgram << ": " << writer.getFrameCount() << " frames of " << imageTopic << " written to " << output
-            << (odometryTopic.empty() ? " without odometry" : " with odometry of " + odometryTopic) << std::endl;
+  std::cout << kProgram << ": " << writer.getFrameCount() << " frames of " << imageTopic << " written to "
+            << recording.output << (odometryTopic.empty() ? " without odometry" : " with odometry of " + odometryTopic)
+            << std::endl;
   return 0;
 }
 } // namespace

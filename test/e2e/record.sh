@@ -68,35 +68,26 @@ grep -q "no truth" va.log || fail "vs-apriltag does not report a recording witho
 cmp -s rec/images/000011.png from-pattern/images/000011.png || fail "pattern: image 11 differs"
 
 # Bad input: one line on stderr, the documented exit status, nothing the user gave overwritten.
-check_error() { # expected_code pattern args...
-  local code=$1 pattern=$2
-  shift 2
-  "$BIN" "$@" > out 2> err
-  local rc=$?
-  [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
-  [ "$(wc -l < err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat err)"
-  grep -q -- "$pattern" err || fail "$* : stderr does not mention '$pattern': $(cat err)"
-}
-check_error 2 "are required" --input dive.avi
-check_error 2 "unknown option" --input dive.avi --camera "$CAMERA" --output x --bogus
-check_error 2 "needs --camera-to-vehicle" --input dive.avi --camera "$CAMERA" --output x --odometry odometry.csv
-check_error 2 "--rate is required" --input 'rec/images/%06d.png' --camera "$CAMERA" --output x
-check_error 2 "expected 6 numbers" --input dive.avi --camera "$CAMERA" --output x --camera-to-vehicle "1 2 3"
-check_error 1 "dive.avi: ended after 12 of the 20 frames asked" --input dive.avi --camera "$CAMERA" --output x1 \
+expect_error 2 "are required" --input dive.avi
+expect_error 2 "unknown option" --input dive.avi --camera "$CAMERA" --output x --bogus
+expect_error 2 "needs --camera-to-vehicle" --input dive.avi --camera "$CAMERA" --output x --odometry odometry.csv
+expect_error 2 "--rate is required" --input 'rec/images/%06d.png' --camera "$CAMERA" --output x
+expect_error 2 "expected 6 numbers" --input dive.avi --camera "$CAMERA" --output x --camera-to-vehicle "1 2 3"
+expect_error 1 "dive.avi: ended after 12 of the 20 frames asked" --input dive.avi --camera "$CAMERA" --output x1 \
   --frames 20
 head -c 60000 dive.avi > cut.avi
-check_error 1 "cut.avi: ended after .* of the 12 frames it states" --input cut.avi --camera "$CAMERA" --output x2
-check_error 1 "no such video file" --input missing.avi --camera "$CAMERA" --output x3
-check_error 1 "/dev/video-none: cannot open the camera" --input /dev/video-none --camera "$CAMERA" --output x4
+expect_error 1 "cut.avi: ended after .* of the 12 frames it states" --input cut.avi --camera "$CAMERA" --output x2
+expect_error 1 "no such video file" --input missing.avi --camera "$CAMERA" --output x3
+expect_error 1 "/dev/video-none: cannot open the camera" --input /dev/video-none --camera "$CAMERA" --output x4
 printf 't,tx,ty,tz,tux,tuy,tuz\n99,0,0,0,0,0,0\n101,1,0,0,0,0,0\n100,2,0,0,0,0,0\n' > unordered.csv
-check_error 1 "unordered.csv:4: t: not increasing" --input dive.avi --camera "$CAMERA" --output x5 \
+expect_error 1 "unordered.csv:4: t: not increasing" --input dive.avi --camera "$CAMERA" --output x5 \
   --odometry unordered.csv --camera-to-vehicle "$MOUNT" --start-time 100
-check_error 1 "odometry.csv: image 0 at t = 0.000000 s is outside the odometry's" --input dive.avi \
+expect_error 1 "odometry.csv: image 0 at t = 0.000000 s is outside the odometry's" --input dive.avi \
   --camera "$CAMERA" --output x6 --odometry odometry.csv --camera-to-vehicle "$MOUNT"
 sed 's#<image_width>640#<image_width>320#; s#<image_height>480#<image_height>240#' "$CAMERA" > small.xml
-check_error 1 'is for 320x240 images, dive.avi gives 640x480' --input dive.avi --camera small.xml --output x7
+expect_error 1 'is for 320x240 images, dive.avi gives 640x480' --input dive.avi --camera small.xml --output x7
 [ ! -e x7 ] || fail "a refused recording left an output folder"
 mkdir keep && echo "mine" > keep/notes.txt
-check_error 1 "keep: exists and is not an empty folder" --input dive.avi --camera "$CAMERA" --output keep
+expect_error 1 "keep: exists and is not an empty folder" --input dive.avi --camera "$CAMERA" --output keep
 [ "$(ls keep)" = notes.txt ] && [ "$(cat keep/notes.txt)" = mine ] || fail "the non-empty output was touched"
 e2e_finish

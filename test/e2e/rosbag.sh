@@ -47,28 +47,19 @@ grep -q ",tracking," track.csv || fail "the tracker never tracks the bag's targe
 [ "$(tail -n +2 seq-compressed/frames.csv | wc -l)" -eq 3 ] || fail "--max-frames 3: not 3 rows"
 "$BIN_DIR/tutorial-ssl-check-sequence" seq-compressed > /dev/null || fail "compressed conversion does not conform"
 
-check_error() { # expected_code pattern args...
-  local code=$1 pattern=$2
-  shift 2
-  "$BIN" "$@" > out 2> err
-  local rc=$?
-  [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
-  [ "$(wc -l < err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat err)"
-  grep -q -- "$pattern" err || fail "$* : stderr does not mention '$pattern': $(cat err)"
-}
-check_error 2 "--bag is required" --list
-check_error 2 "required to convert" --bag dive.bag
-check_error 2 "needs --camera-to-vehicle" --bag dive.bag "${TOPICS[@]}" --odometry-topic /odom --output x
-check_error 2 "--odometry-axes" --bag dive.bag --list --odometry-axes enu
-check_error 1 "dive.bag: /camera/image_rect: no such topic in the bag (.* topics: /camera/image_raw)" \
+expect_error 2 "--bag is required" --list
+expect_error 2 "required to convert" --bag dive.bag
+expect_error 2 "needs --camera-to-vehicle" --bag dive.bag "${TOPICS[@]}" --odometry-topic /odom --output x
+expect_error 2 "--odometry-axes" --bag dive.bag --list --odometry-axes enu
+expect_error 1 "dive.bag: /camera/image_rect: no such topic in the bag (.* topics: /camera/image_raw)" \
   --bag dive.bag --image-topic /camera/image_rect --info-topic /camera/camera_info --output x1
-check_error 1 "/odom: has type nav_msgs/Odometry, expected sensor_msgs/CameraInfo" \
+expect_error 1 "/odom: has type nav_msgs/Odometry, expected sensor_msgs/CameraInfo" \
   --bag dive.bag --image-topic /camera/image_raw --info-topic /odom --output x2
 echo "not a bag" > not.bag
-check_error 1 "not.bag: cannot read the bag" --bag not.bag --list
+expect_error 1 "not.bag: cannot read the bag" --bag not.bag --list
 "$WRITE_BAG" short.bag --odometry-end 0.15 || fail "write-test-bag --odometry-end"
-check_error 1 "short.bag: /camera/image_raw: image 2: odometry: time 1000.225000 is outside" \
+expect_error 1 "short.bag: /camera/image_raw: image 2: odometry: time 1000.225000 is outside" \
   --bag short.bag "${TOPICS[@]}" --odometry-topic /odom --camera-to-vehicle "$MOUNT" --output x3
 [ "$(tail -n +2 x3/frames.csv | wc -l)" -eq 2 ] || fail "the frames before the error are not kept"
-check_error 1 "seq: exists and is not an empty folder" --bag dive.bag "${TOPICS[@]}" --output seq
+expect_error 1 "seq: exists and is not an empty folder" --bag dive.bag "${TOPICS[@]}" --output seq
 e2e_finish

@@ -31,17 +31,7 @@ const char *const kOdometry = "nav_msgs/Odometry";
 // forward-starboard-down (on the right).
 vpHomogeneousMatrix nedFromEnu()
 {
-  vpRotationMatrix R;
-  R[0][0] = 0.;
-  R[0][1] = 1.;
-  R[0][2] = 0.;
-  R[1][0] = 1.;
-  R[1][1] = 0.;
-  R[1][2] = 0.;
-  R[2][0] = 0.;
-  R[2][1] = 0.;
-  R[2][2] = -1.;
-  return vpHomogeneousMatrix(vpTranslationVector(0., 0., 0.), R);
+  return vpHomogeneousMatrix(vpTranslationVector(), vpRotationMatrix({0, 1, 0, 1, 0, 0, 0, 0, -1}));
 }
 
 vpHomogeneousMatrix fluFromFrd()
@@ -278,7 +268,7 @@ void vpSSLRosbagReader::fill(vpSSLSequenceFrame &frame, double t)
   }
 }
 
-bool vpSSLRosbagReader::acquire(vpSSLSequenceFrame &frame, vpImage<unsigned char> &I)
+template <typename Type> bool vpSSLRosbagReader::acquireImage(vpSSLSequenceFrame &frame, vpImage<Type> &I)
 {
   cv::Mat image;
   ros::Time stamp;
@@ -289,13 +279,12 @@ bool vpSSLRosbagReader::acquire(vpSSLSequenceFrame &frame, vpImage<unsigned char
   return true;
 }
 
+bool vpSSLRosbagReader::acquire(vpSSLSequenceFrame &frame, vpImage<unsigned char> &I)
+{
+  return acquireImage(frame, I);
+}
+
 bool vpSSLRosbagReader::acquire(vpSSLSequenceFrame &frame, vpImage<vpRGBa> &I)
 {
-  cv::Mat image;
-  ros::Time stamp;
-  if (!m_impl->read(image, stamp))
-    return false;
-  fill(frame, stamp.toSec());
-  vpImageConvert::convert(image, I);
-  return true;
+  return acquireImage(frame, I);
 }

@@ -134,6 +134,7 @@ public:
 private:
   class Impl;
   void fill(vpSSLSequenceFrame &frame, double t);
+  template <typename Type> bool acquireImage(vpSSLSequenceFrame &frame, vpImage<Type> &I);
   std::unique_ptr<Impl> m_impl;
   vpOdometryConvention m_convention;
   vpCameraParameters m_cam;
