@@ -1,6 +1,7 @@
 // vpSSLRosbagReader on bags the test writes itself with rosbag_storage (ssl_test_bag.h): topics, intrinsics,
 // images and odometry read back as written, errors naming the bag and the topic, and the tracker fed directly.
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -99,13 +100,17 @@ void Rosbag::expectReadsBack(bool compressed) const
   while (reader.acquire(frame, I)) {
     ASSERT_LT(n, written.images.size());
     EXPECT_EQ(frame.index, n);
-    EXPECT_EQ(frame.t, written.imageTimes[n]);
+    EXPECT_EQ(frame.t, written.imageTimes[n] - written.imageTimes[0]);
+    char stamp[32];
+    std::snprintf(stamp, sizeof(stamp), "%.6f", written.imageTimes[n]);
+    EXPECT_EQ(frame.extras["stamp"], stamp);
     EXPECT_TRUE(I == written.images[n]) << "image " << n << " differs from the one written";
     // Each image falls halfway between two odometry samples of a motion whose position and heading are linear in
     // time: the interpolated pose is the motion's own pose at the image time.
     ASSERT_TRUE(frame.hasOdometry);
-    const double dt = frame.t - written.odometryTimes[0], yaw = 0.2 * dt;
-    const vpHomogeneousMatrix enu(vpTranslationVector(0.5 * dt, 0., -1.), vpRotationMatrix(vpRxyzVector(0., 0., yaw)));
+    // The origin is moved to the first sample's position (0, 0, -1 in East-North-Up).
+    const double dt = written.imageTimes[n] - written.odometryTimes[0], yaw = 0.2 * dt;
+    const vpHomogeneousMatrix enu(vpTranslationVector(0.5 * dt, 0., 0.), vpRotationMatrix(vpRxyzVector(0., 0., yaw)));
     expectNear(vpHomogeneousMatrix(frame.oMv), toNedFrd(enu), 1e-9);
     ++n;
   }

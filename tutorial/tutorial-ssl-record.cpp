@@ -173,6 +173,7 @@ int run(int argc, char **argv)
   vpSSLSequenceWriter writer;
   const std::chrono::system_clock::time_point epoch;
   cv::Mat image;
+  double firstTime = 0.;
   long long n = 0;
   while ((frames < 0 || n < frames) && !g_interrupted) {
     // The next image, or the end of the input.
@@ -215,19 +216,18 @@ int run(int argc, char **argv)
                         cameraXml.c_str(), cameraName.c_str(), xmlWidth, xmlHeight, input.c_str(), width, height);
     }
 
+    if (odometry.size() > 0 && !odometry.covers(t)) {
+      throw vpException(vpException::badValue, "%s: image %lld at t = %.6f s is outside the odometry's [%.6f, %.6f]",
+                        odometryCsv.c_str(), n, t, odometry.getStartTime(), odometry.getEndTime());
+    }
     vpSSLSequenceFrame frame;
     frame.index = static_cast<unsigned int>(n);
-    frame.t = t;
-    if (odometry.size() > 0) {
-      if (!odometry.covers(t)) {
-        throw vpException(vpException::badValue, "%s: image %lld at t = %.6f s is outside the odometry's [%.6f, %.6f]",
-                          odometryCsv.c_str(), n, t, odometry.getStartTime(), odometry.getEndTime());
-      }
-      frame.hasOdometry = true;
-      frame.oMv.buildFrom(odometry.interpolate(t));
+    if (n == 0) {
+      firstTime = t;
     }
+    odometry.stampFrame(t, firstTime, frame);
     if (!writer.isOpen()) {
-      writer.open(recording.output, cam, recording.info());
+      writer.open(recording.output, cam, recording.info(), {vpSSLOdometryTrack::stampColumn()});
     }
     if (image.channels() == 1) {
       vpImage<unsigned char> I;

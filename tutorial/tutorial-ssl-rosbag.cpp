@@ -119,7 +119,7 @@ int run(int argc, char **argv)
 
   reader.selectTopics(imageTopic, infoTopic, odometryTopic);
   vpSSLSequenceWriter writer;
-  writer.open(recording.output, reader.getCameraParameters(), recording.info());
+  writer.open(recording.output, reader.getCameraParameters(), recording.info(), {vpSSLOdometryTrack::stampColumn()});
   vpSSLSequenceFrame frame;
   vpImage<vpRGBa> I;
   while ((maxFrames < 0 || writer.getFrameCount() < maxFrames) && reader.acquire(frame, I)) {

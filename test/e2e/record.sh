@@ -38,11 +38,14 @@ import csv, json, math
 rows = list(csv.DictReader(open("rec/frames.csv")))
 assert len(rows) == 12, len(rows)
 for i, r in enumerate(rows):
-    t = float(r["t"])
-    assert abs(t - (100 + i / 10)) < 1e-9, (i, t)  # the video's 10 frames per second from --start-time
-    # Linear in position and heading between the samples: the motion itself at the image's time.
-    assert abs(float(r["odom_tx"]) - (t - 100)) < 1e-6, r
-    assert abs(float(r["odom_tz"]) - 2) < 1e-9, r
+    # The video's 10 frames per second from --start-time, counted from the first image in t.
+    t = float(r["stamp"])
+    assert abs(t - (100 + i / 10)) < 1e-9, (i, t)
+    assert abs(float(r["t"]) - i / 10) < 1e-9, (i, r["t"])
+    # Linear in position and heading between the samples: the motion itself at the image's time, its origin at
+    # the first sample's position (-0.1, 0, 2).
+    assert abs(float(r["odom_tx"]) - (t - 100 + 0.1)) < 1e-6, r
+    assert abs(float(r["odom_tz"])) < 1e-9, r
     assert abs(float(r["odom_tuz"]) - 0.5 * (t - 100)) < 1e-6, r
     assert r["gt_tx"] == "", r  # a recording has no ground truth
 info = json.load(open("rec/sequence.json"))

@@ -51,6 +51,7 @@ public:
   std::unique_ptr<rosbag::View> view;
   rosbag::View::iterator next;
   unsigned int index = 0;
+  double firstTime = 0.;
   unsigned int width = 0, height = 0;
 
   std::string where(const std::string &topic) const { return filename + ": " + topic + ": "; }
@@ -256,15 +257,13 @@ void vpSSLRosbagReader::fill(vpSSLSequenceFrame &frame, double t)
 {
   frame = vpSSLSequenceFrame();
   frame.index = m_impl->index++;
-  frame.t = t;
-  if (m_odometry.size() > 0) {
-    try {
-      frame.oMv.buildFrom(m_odometry.interpolate(t));
-    } catch (const vpException &e) {
-      throw vpException(vpException::badValue, m_impl->where(m_impl->imageTopic) + "image " +
-                                                   std::to_string(frame.index) + ": " + e.getStringMessage());
-    }
-    frame.hasOdometry = true;
+  if (frame.index == 0)
+    m_impl->firstTime = t;
+  try {
+    m_odometry.stampFrame(t, m_impl->firstTime, frame);
+  } catch (const vpException &e) {
+    throw vpException(vpException::badValue, m_impl->where(m_impl->imageTopic) + "image " +
+                                                 std::to_string(frame.index) + ": " + e.getStringMessage());
   }
 }
 

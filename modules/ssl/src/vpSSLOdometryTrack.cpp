@@ -148,3 +148,15 @@ vpHomogeneousMatrix vpSSLOdometryTrack::interpolate(double t) const
   const vpRotationMatrix R = R0 * vpRotationMatrix(vpThetaUVector(alpha * tu[0], alpha * tu[1], alpha * tu[2]));
   return vpHomogeneousMatrix(t0 + (t1 - t0) * alpha, R);
 }
+
+void vpSSLOdometryTrack::stampFrame(double t, double t0, vpSSLSequenceFrame &frame) const
+{
+  frame.t = t - t0;
+  frame.extras[stampColumn()] = formatTime(t);
+  frame.hasOdometry = !m_t.empty();
+  if (frame.hasOdometry) {
+    vpHomogeneousMatrix oMv = interpolate(t);
+    oMv.insert(oMv.getTranslationVector() - m_oMv.front().getTranslationVector());
+    frame.oMv.buildFrom(oMv);
+  }
+}

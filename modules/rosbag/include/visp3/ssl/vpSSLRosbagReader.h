@@ -44,11 +44,12 @@ struct VISP_SSL_EXPORT vpSSLRosbagTopic
   (vpSSLOdometryTrack). Library \c visp_ssl_rosbag (built when CMake finds Debian's ROS packages); the
   conversion to a sequence folder is tutorial-ssl-rosbag, the format and its limits are in doc/recordings.md.
 
-  Each frame's time is its image's header stamp. Intrinsics are \c K's \c fx, \c fy, \c cx, \c cy; a CameraInfo
-  with a non-zero distortion coefficient is refused (ViSP's one-coefficient model is not \c plumb_bob): use the
-  rectified image topic. Odometry is \c pose.pose of each message at its header stamp; with
-  ODOMETRY_REP103 (default) it is turned from ROS's axes (REP 103: world East-North-Up, body x forward, y left,
-  z up) into the project's (world North-East-Down, body x forward, y starboard, z down).
+  Frames are stamped by vpSSLOdometryTrack::stampFrame(): \c t counts from the first image's header stamp, the
+  extra \c stamp holds the stamp itself, and \c oMv has its origin at the first odometry sample's position. Intrinsics
+  are \c K's \c fx, \c fy, \c cx, \c cy; a CameraInfo with a non-zero distortion coefficient is refused (ViSP's
+  one-coefficient model is not \c plumb_bob): use the rectified image topic. Odometry is \c pose.pose of each message at
+  its header stamp; with ODOMETRY_REP103 (default) it is turned from ROS's axes (REP 103: world East-North-Up, body x
+  forward, y left, z up) into the project's (world North-East-Down, body x forward, y starboard, z down).
 
   The frames feed the tracker directly:
   \code
@@ -120,8 +121,9 @@ public:
   const vpSSLOdometryTrack &getOdometry() const { return m_odometry; }
 
   /*!
-    Reads the next image, converted to grey, and fills \e frame: \c index (counted from 0), \c t (the image's
-    header stamp, s) and, with an odometry topic, \c oMv.
+    Reads the next image, converted to grey, and fills \e frame: \c index (counted from 0), \c t (s, from the first
+    image's header stamp), \c extras["stamp"] (the header stamp) and, with an odometry topic, \c oMv (see the class
+    description).
     \return false after the last image.
     \exception vpException (badValue) <tt>BAG: TOPIC: image N: problem</tt> on an image that cannot be decoded,
     has a size other than the CameraInfo's or the first image's, a zero stamp, or a time the odometry does not

@@ -11,6 +11,7 @@
 
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/ssl/vpSSLConfig.h>
+#include <visp3/ssl/vpSSLSequenceFrame.h>
 
 /*!
   \class vpSSLOdometryTrack
@@ -59,6 +60,17 @@ public:
     \exception vpException (badValue) when covers(t) is false.
   */
   vpHomogeneousMatrix interpolate(double t) const;
+
+  /*!
+    Stamps a recording's frame for the sequence format's limits (doc/recordings.md): \c frame.t is \e t minus
+    \e t0, the time of the recording's first image (Unix times and ROS stamps exceed frames.csv's +-1e9 s); the
+    extra column stampColumn() keeps \e t itself (6 decimals); with samples, \c frame.oMv is the pose at \e t
+    with its origin moved to the first sample's position, axes kept (UTM coordinates exceed frames.csv's +-1e4 m).
+    \exception vpException (badValue) when the track has samples and does not cover \e t.
+  */
+  void stampFrame(double t, double t0, vpSSLSequenceFrame &frame) const;
+  //! The extra column of the absolute image times written by stampFrame(): "stamp".
+  static const char *stampColumn() { return "stamp"; }
 
   //! Number of samples.
   size_t size() const { return m_t.size(); }
