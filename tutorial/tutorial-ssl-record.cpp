@@ -147,7 +147,9 @@ int run(int argc, char **argv)
     // OpenCV's own warning about a camera it cannot open would be a second line on stderr.
     cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
     const bool opened =
-        input.rfind("/dev/", 0) == 0 ? capture.open(input, cv::CAP_V4L2) : capture.open(std::stoi(input), cv::CAP_V4L2);
+        input.rfind("/dev/", 0) == 0
+            ? capture.open(input, cv::CAP_V4L2)
+            : capture.open(static_cast<int>(ssltut::parseInteger("option --input", input, 0, 1000)), cv::CAP_V4L2);
     if (!opened) {
       throw vpException(vpException::ioError, "%s: cannot open the camera", input.c_str());
     }
@@ -183,7 +185,7 @@ int run(int argc, char **argv)
       std::error_code ec;
       got = std::filesystem::is_regular_file(path, ec);
       if (got) {
-        image = cv::imread(path, cv::IMREAD_COLOR);
+        image = cv::imread(path, cv::IMREAD_ANYCOLOR);
         if (image.empty()) {
           throw vpException(vpException::ioError, "%s: cannot read the image", path.c_str());
         }
