@@ -22,6 +22,8 @@ packages=(
   libopencv-contrib-dev
   # SIMD matching function (Highway), target generator (cairo), linear algebra used with ViSP.
   libhwy-dev libcairo2-dev libeigen3-dev
+  # ROS 1 bags (modules/rosbag, optional at build time, built and tested in CI).
+  librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libcv-bridge-dev
   # Tests and benchmarks; visp-images-data holds the real photographs the false-positive tests use.
   libgtest-dev libbenchmark-dev visp-images-data
   # Formatting check, python3 for the end-to-end scripts' JSON and CSV checks, doxygen for the API reference

@@ -10,6 +10,9 @@
 #                  otherwise counts it in FAILS and the script goes on
 #   pass MESSAGE   reports a passed check on stdout
 #   e2e_finish     the script's last line: exit 1 if a check failed, else 0
+#   expect_error CODE PATTERN ARGS...
+#                  runs BIN ARGS and checks a bad input's contract: exit status CODE, exactly one line on stderr,
+#                  matching the grep pattern PATTERN (stdout in ./out, stderr in ./err)
 set -u
 
 if [ $# -lt 3 ]; then
@@ -32,6 +35,15 @@ fail() {
   FAILS=$((FAILS + 1))
 }
 pass() { echo "ok: $*"; }
+expect_error() {
+  local code=$1 pattern=$2
+  shift 2
+  "$BIN" "$@" > out 2> err
+  local rc=$?
+  [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
+  [ "$(wc -l < err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat err)"
+  grep -q -- "$pattern" err || fail "$* : stderr does not mention '$pattern': $(cat err)"
+}
 e2e_finish() {
   if [ "$FAILS" -ne 0 ]; then
     echo "$FAILS check(s) failed" >&2

@@ -12,60 +12,15 @@
 #include <visp3/core/vpException.h>
 #include <visp3/ssl/vpSSLImageIo.h>
 
+#include "vpSSLCsv.h"
+
 namespace fs = std::filesystem;
+using namespace vpSSLCsv;
 
 namespace {
 const char *const standardColumns[14] = {"frame",    "t",     "odom_tx", "odom_ty", "odom_tz", "odom_tux", "odom_tuy",
                                          "odom_tuz", "gt_tx", "gt_ty",   "gt_tz",   "gt_tux",  "gt_tuy",   "gt_tuz"};
 const char *const imageExtensions[] = {"png", "jpg", "jpeg", "pgm", "ppm"};
-
-std::string trim(const std::string &s)
-{
-  size_t b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos)
-    return std::string();
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
-// RFC 4180 cells on one line; quotes are only needed for extra columns, but a converter may add them anywhere.
-// Returns false on an unterminated quote.
-bool splitCsv(const std::string &line, std::vector<std::string> &cells)
-{
-  cells.clear();
-  std::string cell;
-  size_t i = 0;
-  while (true) {
-    cell.clear();
-    if (i < line.size() && line[i] == '"') {
-      ++i;
-      while (true) {
-        if (i >= line.size())
-          return false;
-        if (line[i] == '"') {
-          if (i + 1 < line.size() && line[i + 1] == '"') {
-            cell += '"';
-            i += 2;
-            continue;
-          }
-          ++i;
-          break;
-        }
-        cell += line[i++];
-      }
-      size_t comma = line.find(',', i);
-      cell += line.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
-      i = comma;
-    } else {
-      size_t comma = line.find(',', i);
-      cell.assign(line, i, comma == std::string::npos ? std::string::npos : comma - i);
-      i = comma;
-    }
-    cells.push_back(cell);
-    if (i == std::string::npos)
-      return true;
-    ++i;
-  }
-}
 
 // After an error the reader stays failed: the next call repeats the error instead of reading on out of step.
 template <typename Read> bool sticky(std::string &error, Read read)
@@ -80,36 +35,6 @@ template <typename Read> bool sticky(std::string &error, Read read)
   }
 }
 
-// Locale-independent, whole-cell, finite number within +-bound; an empty string means "ok".
-std::string parseNumber(const std::string &cell, double &value, double bound, const char *unit)
-{
-  std::string s = trim(cell);
-  const char *b = s.data(), *e = s.data() + s.size();
-  if (b != e && *b == '+') {
-    ++b;
-    // from_chars takes a sign of its own: "+-0.1" is not a number.
-    if (b != e && (*b == '-' || *b == '+'))
-      return "not a number: \"" + cell + "\"";
-  }
-  auto r = std::from_chars(b, e, value);
-  if (s.empty() || r.ec != std::errc() || r.ptr != e || !std::isfinite(value))
-    return "not a number: \"" + cell + "\"";
-  if (std::fabs(value) > bound) {
-    std::ostringstream os;
-    os << s << " is beyond +-" << bound << " " << unit;
-    return os.str();
-  }
-  return std::string();
-}
-
-// Lines ending in CR alone (classic Mac OS) read as one line holding every row.
-void checkLineEnd(const std::string &line, const std::string &where)
-{
-  if (line.find('\r') != std::string::npos)
-    throw vpException(vpException::badValue, where + "a carriage return inside the line: lines must end in LF or "
-                                                     "CRLF, not CR alone (convert the file, e.g. with tr '\\r' "
-                                                     "'\\n')");
-}
 } // namespace
 
 vpSSLSequenceReader::vpSSLSequenceReader()
