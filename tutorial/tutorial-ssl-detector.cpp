@@ -50,7 +50,7 @@ Options:
   --small-landmarks   Small-landmark mode: matches on the image upsampled 2x with w = 20, so
                       landmarks down to ~8 px radius are seen (the default sees ~25 px and up;
                       about twice the matching time). Use it for targets at range.
-  --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.12).
+  --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.10).
   --no-normalize      Switch brightness normalisation off (on by default, paper Fig. 13).
   --threads N         Worker threads for the matching function, 0 to 256 (default 0: all
                       cores).
@@ -220,7 +220,7 @@ int run(int argc, char **argv)
   std::string input, cameraFile, cameraName = "Camera", targetName = "ssl3-a3", outputDir;
   bool json = false, display = false, normalize = true, smallLandmarks = false;
   unsigned int window = 40, threads = 0;
-  double threshold = 0.12;
+  double threshold = 0.10;
   long maxFrames = -1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];

@@ -88,7 +88,7 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 vpSSLDetector::vpSSLDetector(const vpSSLTarget &target)
     : vpDetectorBase(), m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(),
       m_identifier(target), m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
-      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.12),
+      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.10),
       m_rois(), m_noRois(), m_fullSearchPeriod(10), m_roiCalls(0), m_lastSearchWasFull(true)
 {
   m_radiusEstimator.setP(target.getP());

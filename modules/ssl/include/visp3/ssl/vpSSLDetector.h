@@ -79,7 +79,7 @@ public:
 
   //! Window length w of the matching function (default 40, paper Sec. 2.1).
   void setWindow(unsigned int w);
-  //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.12).
+  //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.10).
   void setThreshold(double threshold);
   //! Brightness normalisation before matching (default on, paper Fig. 13).
   void setBrightnessNormalization(bool enable) { m_normalize = enable; }
