@@ -533,6 +533,22 @@ TEST_F(SequenceIo, crlfLineEndingsAndATrailingEmptyLineAreTolerated)
   EXPECT_EQ(readError(dir()), "");
 }
 
+TEST_F(SequenceIo, aLineLongerThanOneMebibyteIsAnErrorNamingItsLine)
+{
+  // doc/input-limits.md: a row of frames.csv is at most 1 MiB, so that a file without line ends is not read whole
+  // into one line. A row just under the bound is read as usual (its extra column kept).
+  writeGreySequence(dir(), 2);
+  std::vector<std::string> lines = readLines(m_dir / "frames.csv");
+  ASSERT_EQ(lines.size(), 3u);
+  std::string text = lines[0] + ",note\n";
+  const size_t room = (size_t(1) << 20) - lines[1].size() - 1;
+  text += lines[1] + "," + std::string(room, 'x') + "\n";
+  text += lines[2] + "," + std::string(room + 1, 'x') + "\n";
+  writeText(m_dir / "frames.csv", text);
+  const std::string msg = readError(dir());
+  EXPECT_CONTAINS(msg, "frames.csv:3: line longer than 1048576 bytes");
+}
+
 TEST_F(SequenceIo, missingCameraXmlIsNamed)
 {
   writeGreySequence(dir(), 2);

@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <istream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +14,37 @@
 #include <visp3/core/vpException.h>
 
 namespace vpSSLCsv {
+
+// Longest line of a CSV read by getLine(): rows of a few hundred bytes, with room for extra columns.
+const size_t kMaxLineLength = 1 << 20;
+
+// std::getline() with a bound, so that a file without line ends cannot grow the line to the file's size: reads the
+// next line of \e in without its LF into \e line; false at the end of the file (as std::getline()).
+// \exception vpException naming \e where (the file and line) once the line exceeds kMaxLineLength bytes.
+inline bool getLine(std::istream &in, std::string &line, const std::string &where)
+{
+  line.clear();
+  std::streambuf *buffer = in.rdbuf();
+  if (!in.good() || buffer == nullptr) {
+    in.setstate(std::ios::failbit);
+    return false;
+  }
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(line.empty() ? std::ios::eofbit | std::ios::failbit : std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n') {
+      return true;
+    }
+    if (line.size() >= kMaxLineLength) {
+      throw vpException(vpException::badValue,
+                        where + "line longer than " + std::to_string(kMaxLineLength) + " bytes (no line end?)");
+    }
+    line.push_back(static_cast<char>(c));
+  }
+}
 
 inline std::string trim(const std::string &s)
 {

@@ -52,7 +52,7 @@ vpSSLOdometryTrack vpSSLOdometryTrack::load(const std::string &filename)
   static const char *const quaternion[8] = {"t", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
   std::string line;
   std::vector<std::string> cells;
-  std::getline(in, line);
+  vpSSLCsv::getLine(in, line, filename + ":1: ");
   if (line.compare(0, 3, "\xEF\xBB\xBF") == 0)
     line.erase(0, 3);
   if (!line.empty() && line.back() == '\r')
@@ -79,7 +79,7 @@ vpSSLOdometryTrack vpSSLOdometryTrack::load(const std::string &filename)
   vpSSLOdometryTrack track;
   size_t lineNumber = 1;
   bool emptyLine = false;
-  while (std::getline(in, line)) {
+  while (vpSSLCsv::getLine(in, line, filename + ":" + std::to_string(lineNumber + 1) + ": ")) {
     ++lineNumber;
     const std::string where = filename + ":" + std::to_string(lineNumber) + ": ";
     if (!line.empty() && line.back() == '\r')

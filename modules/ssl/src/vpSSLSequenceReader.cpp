@@ -100,7 +100,7 @@ void vpSSLSequenceReader::readHeader()
   std::string expected;
   for (const char *c : standardColumns)
     expected += std::string(expected.empty() ? "" : ",") + c;
-  if (!std::getline(m_csv, m_line))
+  if (!getLine(m_csv, m_line, m_csvPath + ":1: "))
     throw vpException(vpException::badValue, m_csvPath + ":1: empty file, expected the header " + expected);
   m_lineNumber = 1;
   if (m_line.compare(0, 3, "\xEF\xBB\xBF") == 0) // UTF-8 byte order mark written by spreadsheets
@@ -145,7 +145,7 @@ bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
     throw vpException(vpException::notInitialized, "vpSSLSequenceReader: call open() before next()");
   if (m_ended)
     return false;
-  if (!std::getline(m_csv, m_line)) {
+  if (!getLine(m_csv, m_line, m_csvPath + ":" + std::to_string(m_lineNumber + 1) + ": ")) {
     m_ended = true;
     return false;
   }
@@ -156,7 +156,7 @@ bool vpSSLSequenceReader::readRow(vpSSLSequenceFrame &frame)
   if (m_line.empty()) {
     // Trailing empty lines end the table; an empty line followed by rows is a hole in it.
     unsigned int emptyLine = m_lineNumber;
-    while (std::getline(m_csv, m_line)) {
+    while (getLine(m_csv, m_line, m_csvPath + ":" + std::to_string(m_lineNumber + 1) + ": ")) {
       ++m_lineNumber;
       if (!m_line.empty() && m_line != "\r")
         throw vpException(vpException::badValue, m_csvPath + ":" + std::to_string(emptyLine) +
