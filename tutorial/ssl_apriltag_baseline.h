@@ -35,7 +35,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
   from ViSP with the sequence's camera and the sheet's tag size.
 
   Configuration (checked on ViSP's own benchmark images by test/test_vs_apriltag.cpp): quad decimate 1
-  (decimate 2 halves the range, doc/benchmarks.md), edge refinement on, pose HOMOGRAPHY_VIRTUAL_VS (the
+  (the full image, so that the farthest tags are read), edge refinement on, pose HOMOGRAPHY_VIRTUAL_VS (the
   homography initialises a virtual visual servoing on the four corners: ViSP's default and its most
   accurate method on those images), one thread (the SSL tracker is timed on one thread too).
 */
