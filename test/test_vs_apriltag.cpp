@@ -7,17 +7,18 @@
 #include <gtest/gtest.h>
 
 #include <visp3/core/vpIoTools.h>
+#include <visp3/ssl/vpSSLAprilTagBaseline.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
+#include <visp3/ssl/vpSSLDetectionStats.h>
 #include <visp3/ssl/vpSSLRenderer.h>
-
-#include "../tutorial/ssl_apriltag_baseline.h"
 
 namespace {
 const std::string kVispBenchmark = std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/benchmark/640x480";
 
-sslbench::FrameResult frame(double range, bool detected)
+vpSSLFrameResult frame(double range, bool detected)
 {
-  sslbench::FrameResult f;
+  vpSSLFrameResult f;
   f.truthKnown = true;
   f.hasTarget = true;
   f.range = range;
@@ -34,7 +35,8 @@ TEST(AprilTagBaseline, PoseErrorOnVispBenchmarkImages)
 {
   if (!vpIoTools::checkFilename(kVispBenchmark + "/tag36_11_640x480.png"))
     GTEST_SKIP() << "visp-images-data not installed: " << kVispBenchmark;
-  const std::vector<sslbench::VispBenchmarkResult> res = sslbench::runOnVispBenchmark(kVispBenchmark);
+  const std::vector<vpSSLAprilTagBaseline::BenchmarkResult> res =
+      vpSSLAprilTagBaseline::runOnVispBenchmark(kVispBenchmark);
   ASSERT_EQ(res.size(), 5u);
   for (size_t i = 0; i < res.size(); ++i) {
     SCOPED_TRACE("tag " + std::to_string(i));
@@ -57,36 +59,36 @@ TEST(AprilTagBaseline, FindsRenderedA3SheetPose)
   const vpHomogeneousMatrix cMo(0.1, -0.05, 2., vpMath::rad(170.), vpMath::rad(10.), vpMath::rad(5.));
   vpImage<unsigned char> I;
   renderer.render(cMo, I);
-  sslbench::AprilTagBaseline baseline(sheet, cam);
+  vpSSLAprilTagBaseline baseline(sheet, cam);
   ASSERT_TRUE(baseline.detect(I));
   EXPECT_EQ(baseline.getNbOthers(), 0u);
-  EXPECT_LT(sslbench::positionError(baseline.getPose(), cMo), 0.02);
-  EXPECT_LT(sslbench::angleError(baseline.getPose(), cMo), 2.);
+  EXPECT_LT(vpSSLBenchMath::positionError(baseline.getPose(), cMo), 0.02);
+  EXPECT_LT(vpSSLBenchMath::angleError(baseline.getPose(), cMo), 2.);
   // Another id on the same sheet is not the target: no detection of it, one "other" tag.
-  sslbench::AprilTagBaseline other(vpSSLAprilTagSheet::a3(1), cam);
+  vpSSLAprilTagBaseline other(vpSSLAprilTagSheet::a3(1), cam);
   EXPECT_FALSE(other.detect(I));
   EXPECT_EQ(other.getNbOthers(), 1u);
 }
 
 TEST(BenchmarkArithmetic, BandsCoverZeroToTwelveMetres)
 {
-  EXPECT_EQ(sslbench::bandIndex(0.), 0);
-  EXPECT_EQ(sslbench::bandIndex(0.999), 0);
-  EXPECT_EQ(sslbench::bandIndex(1.), 1);
-  EXPECT_EQ(sslbench::bandIndex(3.9), 2);
-  EXPECT_EQ(sslbench::bandIndex(4.), 3);
-  EXPECT_EQ(sslbench::bandIndex(8.), 4);
-  EXPECT_EQ(sslbench::bandIndex(12.), 4);
-  EXPECT_EQ(sslbench::bandIndex(12.01), -1);
-  EXPECT_EQ(sslbench::bandIndex(-0.1), -1);
-  EXPECT_EQ(sslbench::bandIndex(sslbench::kNaN), -1);
-  EXPECT_EQ(sslbench::bandLabel(0), "0-1");
-  EXPECT_EQ(sslbench::bandLabel(4), "8-12");
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(0.), 0);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(0.999), 0);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(1.), 1);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(3.9), 2);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(4.), 3);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(8.), 4);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(12.), 4);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(12.01), -1);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(-0.1), -1);
+  EXPECT_EQ(vpSSLBenchMath::bandIndex(vpSSLBenchMath::nan()), -1);
+  EXPECT_EQ(vpSSLBenchMath::bandLabel(0), "0-1");
+  EXPECT_EQ(vpSSLBenchMath::bandLabel(4), "8-12");
 }
 
 TEST(BenchmarkArithmetic, RatesPerBandAndFalseDetections)
 {
-  sslbench::Stats s;
+  vpSSLDetectionStats s;
   s.add(frame(0.5, true));
   s.add(frame(1.5, true));
   s.add(frame(1.6, false));
@@ -94,7 +96,7 @@ TEST(BenchmarkArithmetic, RatesPerBandAndFalseDetections)
   s.add(frame(5.2, true));
   s.add(frame(5.4, false));
   s.add(frame(20., false)); // beyond the bands: counted in the overall rate only
-  sslbench::FrameResult none;
+  vpSSLFrameResult none;
   none.truthKnown = true;
   none.hasTarget = false;
   none.detected = true;
@@ -118,38 +120,38 @@ TEST(BenchmarkArithmetic, RatesPerBandAndFalseDetections)
 // nbPositionOnly, and never in the angle statistics, even when the caller filled angleError.
 TEST(BenchmarkArithmetic, PositionOnlyFramesAreLeftOutOfTheAngleStatistics)
 {
-  sslbench::Stats s, t;
+  vpSSLDetectionStats s, t;
   const double angles[3] = {1., 2., 3.};
   for (double a : angles) {
-    sslbench::FrameResult f = frame(2., true);
+    vpSSLFrameResult f = frame(2., true);
     f.positionError = 0.01;
     f.angleError = a;
     s.add(f);
   }
   for (int i = 0; i < 4; ++i) {
-    sslbench::FrameResult f = frame(6., true);
+    vpSSLFrameResult f = frame(6., true);
     f.orientationKnown = false;
     f.positionError = 0.05;
     f.angleError = 90.; // what a placeholder rotation gives: must not reach the median
     s.add(f);
   }
-  sslbench::FrameResult missed = frame(7., false);
+  vpSSLFrameResult missed = frame(7., false);
   missed.orientationKnown = false; // not detected: not a position-only pose either
   s.add(missed);
   EXPECT_EQ(s.nbDetected, 7u);
   EXPECT_EQ(s.nbPositionOnly, 4u);
-  EXPECT_DOUBLE_EQ(sslbench::percentile(s.angle, 50.), 2.);
-  EXPECT_DOUBLE_EQ(sslbench::percentile(s.angle, 100.), 3.);
-  EXPECT_DOUBLE_EQ(sslbench::percentile(s.position, 50.), 0.05); // positions of all 7 detected frames count
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile(s.angle, 50.), 2.);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile(s.angle, 100.), 3.);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile(s.position, 50.), 0.05); // positions of all 7 detected frames count
   t.merge(s);
   t.merge(s);
   EXPECT_EQ(t.nbPositionOnly, 8u);
-  EXPECT_DOUBLE_EQ(sslbench::percentile(t.angle, 100.), 3.);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile(t.angle, 100.), 3.);
 }
 
 TEST(BenchmarkArithmetic, Range90IsTheFarthestBinDetectedNineTimesInTen)
 {
-  sslbench::Stats s;
+  vpSSLDetectionStats s;
   for (int i = 0; i < 10; ++i)
     s.add(frame(2.1, true)); // bin [2, 2.5): 10/10
   for (int i = 0; i < 10; ++i)
@@ -159,15 +161,15 @@ TEST(BenchmarkArithmetic, Range90IsTheFarthestBinDetectedNineTimesInTen)
   EXPECT_DOUBLE_EQ(s.range90(0.5, 0.9), 4.5);
   EXPECT_DOUBLE_EQ(s.range90(0.5, 0.8), 6.5);
   EXPECT_DOUBLE_EQ(s.range90(1., 0.9), 5.);
-  sslbench::Stats empty;
+  vpSSLDetectionStats empty;
   EXPECT_TRUE(std::isnan(empty.range90()));
 }
 
 TEST(BenchmarkArithmetic, RecordingWithoutTruthGivesTheRateOfFramesWithADetection)
 {
-  sslbench::Stats s;
+  vpSSLDetectionStats s;
   for (int i = 0; i < 4; ++i) {
-    sslbench::FrameResult f;
+    vpSSLFrameResult f;
     f.detected = (i < 3);
     f.timeMs = i + 1.;
     s.add(f);
@@ -175,25 +177,25 @@ TEST(BenchmarkArithmetic, RecordingWithoutTruthGivesTheRateOfFramesWithADetectio
   EXPECT_EQ(s.nbWithTarget, 0u);
   EXPECT_DOUBLE_EQ(s.rate(), 0.75);
   EXPECT_TRUE(std::isnan(s.range90()));
-  EXPECT_DOUBLE_EQ(sslbench::percentile(s.time, 50.), 2.5);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile(s.time, 50.), 2.5);
 }
 
 TEST(BenchmarkArithmetic, PercentilesInterpolateAndSkipNaN)
 {
-  EXPECT_DOUBLE_EQ(sslbench::percentile({3., 1., 2.}, 50.), 2.);
-  EXPECT_DOUBLE_EQ(sslbench::percentile({1., 2., 3., 4.}, 50.), 2.5);
-  EXPECT_NEAR(sslbench::percentile({0., 10., 20., 30., 40., 50., 60., 70., 80., 90., 100.}, 95.), 95., 1e-12);
-  EXPECT_DOUBLE_EQ(sslbench::percentile({sslbench::kNaN, 5.}, 50.), 5.);
-  EXPECT_TRUE(std::isnan(sslbench::percentile({}, 50.)));
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile({3., 1., 2.}, 50.), 2.);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile({1., 2., 3., 4.}, 50.), 2.5);
+  EXPECT_NEAR(vpSSLBenchMath::percentile({0., 10., 20., 30., 40., 50., 60., 70., 80., 90., 100.}, 95.), 95., 1e-12);
+  EXPECT_DOUBLE_EQ(vpSSLBenchMath::percentile({vpSSLBenchMath::nan(), 5.}, 50.), 5.);
+  EXPECT_TRUE(std::isnan(vpSSLBenchMath::percentile({}, 50.)));
 }
 
 TEST(BenchmarkArithmetic, PoseErrors)
 {
   const vpHomogeneousMatrix truth(0.1, 0.2, 3., 0.1, -0.2, 0.3);
   const vpHomogeneousMatrix turned = truth * vpHomogeneousMatrix(0., 0., 0., 0., 0., vpMath::rad(7.));
-  EXPECT_NEAR(sslbench::angleError(turned, truth), 7., 1e-9);
-  EXPECT_NEAR(sslbench::positionError(turned, truth), 0., 1e-12);
+  EXPECT_NEAR(vpSSLBenchMath::angleError(turned, truth), 7., 1e-9);
+  EXPECT_NEAR(vpSSLBenchMath::positionError(turned, truth), 0., 1e-12);
   const vpHomogeneousMatrix moved(0.1, 0.2 + 0.03, 3. + 0.04, 0.1, -0.2, 0.3);
-  EXPECT_NEAR(sslbench::positionError(moved, truth), 0.05, 1e-12);
-  EXPECT_NEAR(sslbench::angleError(moved, truth), 0., 1e-4); // acos near 1
+  EXPECT_NEAR(vpSSLBenchMath::positionError(moved, truth), 0.05, 1e-12);
+  EXPECT_NEAR(vpSSLBenchMath::angleError(moved, truth), 0., 1e-4); // acos near 1
 }

@@ -2,7 +2,7 @@
   \file ssl_servo_loop.h
   \brief Tutorial-local closed loop of tutorial-ssl-servo and tutorial-ssl-servo-monte-carlo: the scene (vehicle,
   target, water, behaviour), and one control step (scenario events, rendering, detection, servo input,
-  behaviour update, logged row). Header-only, like ssl_apriltag_baseline.h.
+  behaviour update, logged row). Header-only.
 */
 #ifndef SSL_SERVO_LOOP_H
 #define SSL_SERVO_LOOP_H
@@ -26,8 +26,10 @@
 #include <visp3/core/vpRxyzVector.h>
 #include <visp3/core/vpThetaUVector.h>
 #include <visp3/core/vpTranslationVector.h>
+#include <visp3/ssl/vpSSLAprilTagBaseline.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLAuvSimulator.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
@@ -40,7 +42,6 @@
 #include <visp3/ssl/vpSSLTracker.h>
 #include <visp3/ssl/vpSSLWaterModel.h>
 
-#include "ssl_apriltag_baseline.h"
 #include "ssl_tutorial_common.h"
 
 namespace sslservo {
@@ -373,7 +374,7 @@ inline void writeRows(const std::string &path, const std::vector<Row> &rows)
   if (!csv) {
     throw vpException(vpException::ioError, "%s: cannot write", path.c_str());
   }
-  auto num = [](double x, int digits) { return std::isfinite(x) ? sslbench::fmt(x, digits) : std::string(); };
+  auto num = [](double x, int digits) { return std::isfinite(x) ? vpSSLBenchMath::fmt(x, digits) : std::string(); };
   csv << "t,state,nb_points,est_range,true_range,yaw_rate_demand,yaw_rate,heading_deg,depth,lateral,target_y,"
          "collision,y_rel_est,y_rel_true\n";
   for (const Row &r : rows) {
@@ -575,7 +576,7 @@ private:
   vpSSLAprilTagSheet m_sheet;
   vpSSLTarget m_target; // kept alive: the tracker and the truth points refer to its landmarks
   vpSSLTracker m_tracker;
-  sslbench::AprilTagBaseline m_tagFinder;
+  vpSSLAprilTagBaseline m_tagFinder;
   AprilTagFusion m_tagFusion;
   vpSSLDetector m_rawDetector;
   vpSSLPoseEstimator m_rawEstimator;

@@ -2,7 +2,7 @@
   \file ssl_tutorial_common.h
   \brief Tutorial-local helpers every tutorial shares: strict option parsing, a top-level guard so that no
   exception reaches main's caller, checked output streams, an X display that falls back to files, and numbered
-  image patterns. Header-only, like ssl_apriltag_baseline.h.
+  image patterns. Header-only.
 */
 #ifndef SSL_TUTORIAL_COMMON_H
 #define SSL_TUTORIAL_COMMON_H

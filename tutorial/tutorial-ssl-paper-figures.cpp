@@ -15,7 +15,9 @@
 
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpMath.h>
+#include <visp3/ssl/vpSSLAprilTagBaseline.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPattern.h>
@@ -23,8 +25,6 @@
 #include <visp3/ssl/vpSSLRadiusEstimator.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
-
-#include "ssl_apriltag_baseline.h"
 
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_input.h"
@@ -70,8 +70,6 @@ on stderr).
   std::cerr << "tutorial-ssl-paper-figures: " << msg << std::endl;
   std::exit(code);
 }
-
-using sslbench::fmt;
 
 const unsigned int kSize = 240;      // view side (px)
 const double kFocal = 400.;          // px
@@ -200,7 +198,7 @@ double aprilTagRate(const View &view, const vpSSLAprilTagSheet &tag, unsigned in
   vpImage<unsigned char> I0, I;
   render(PATTERN_APRILTAG, view, tag, I0);
   vpCameraParameters cam(kFocal, kFocal, kSize / 2., kSize / 2.);
-  sslbench::AprilTagBaseline baseline(vpSSLAprilTagSheet(tag.getId(), 2. * kRadius, 1., 1.), cam);
+  vpSSLAprilTagBaseline baseline(vpSSLAprilTagSheet(tag.getId(), 2. * kRadius, 1., 1.), cam);
   std::mt19937 rng(7);
   std::normal_distribution<double> noise(0., 4.);
   unsigned int found = 0;
@@ -262,8 +260,9 @@ void figure2(const std::string &dir, bool quick, std::ostream &md)
     plot.setYRange(-0.2, 1.05);
     plot.save(dir + "/" + s.file, 640, 320);
     for (size_t i = 0; i < x.size(); i += std::max<size_t>(1, x.size() / 4))
-      md << "| " << s.file.substr(5, s.file.size() - 9) << " | " << fmt(x[i], 2) << " | " << fmt(lin1[i], 3) << " | "
-         << fmt(lin4[i], 3) << " | " << fmt(circ[i], 3) << " | " << fmt(at[i], 2) << " |\n";
+      md << "| " << s.file.substr(5, s.file.size() - 9) << " | " << vpSSLBenchMath::fmt(x[i], 2) << " | "
+         << vpSSLBenchMath::fmt(lin1[i], 3) << " | " << vpSSLBenchMath::fmt(lin4[i], 3) << " | "
+         << vpSSLBenchMath::fmt(circ[i], 3) << " | " << vpSSLBenchMath::fmt(at[i], 2) << " |\n";
   }
   md << "\n";
 }
@@ -299,7 +298,8 @@ void figure4(const std::string &dir, std::ostream &md)
     std::snprintf(name, sizeof(name), "R = %.0f px", radius);
     plot.addSeries(name, x, y);
     plot.addVerticalLine(radius, name);
-    md << "| " << fmt(radius, 0) << " | " << peak << " | " << fmt(peak / radius, 2) << " |\n";
+    md << "| " << vpSSLBenchMath::fmt(radius, 0) << " | " << peak << " | " << vpSSLBenchMath::fmt(peak / radius, 2)
+       << " |\n";
   }
   plot.save(dir + "/fig4-window.png", 640, 320);
   md << "\n";
@@ -351,11 +351,12 @@ void figure5(const std::string &dir, const std::string &sequence, std::ostream &
   }
   md << "## Fig. 5\n\n"
      << truth.size() << " frames of " << sequence << " with B detected. Relative error (estimated "
-     << "/ true - 1): ring reading median " << fmt(100. * sslbench::percentile(relRing, 50.), 1) << " % (p5 "
-     << fmt(100. * sslbench::percentile(relRing, 5.), 1) << ", p95 "
-     << fmt(100. * sslbench::percentile(relRing, 95.), 1) << "); Eq. 7 sweep median "
-     << fmt(100. * sslbench::percentile(relEq7, 50.), 1) << " % (p5 " << fmt(100. * sslbench::percentile(relEq7, 5.), 1)
-     << ", p95 " << fmt(100. * sslbench::percentile(relEq7, 95.), 1) << ").\n\n";
+     << "/ true - 1): ring reading median " << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relRing, 50.), 1)
+     << " % (p5 " << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relRing, 5.), 1) << ", p95 "
+     << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relRing, 95.), 1) << "); Eq. 7 sweep median "
+     << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relEq7, 50.), 1) << " % (p5 "
+     << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relEq7, 5.), 1) << ", p95 "
+     << vpSSLBenchMath::fmt(100. * vpSSLBenchMath::percentile(relEq7, 95.), 1) << ").\n\n";
 }
 
 double medianFps(vpSSLDetector &detector, const vpImage<unsigned char> &I, unsigned int runs)
@@ -366,7 +367,7 @@ double medianFps(vpSSLDetector &detector, const vpImage<unsigned char> &I, unsig
     detector.detect(I);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
-  return 1000. / sslbench::percentile(ms, 50.);
+  return 1000. / vpSSLBenchMath::percentile(ms, 50.);
 }
 
 void table1(bool quick, std::ostream &md)
@@ -407,8 +408,10 @@ void table1(bool quick, std::ostream &md)
      << " runs (ROI: three 100x100 regions, whole image every 10th frame, so the median is an ROI frame).\n\n"
      << "| image size | FPS whole image (ours) | FPS ROI 100x100 (ours) | paper: Pentium IV 3 GHz whole / ROI | paper: "
         "Pentium M 1.4 GHz whole / ROI |\n|---|---:|---:|---|---|\n"
-     << "| 640x480 | " << fmt(fullFps[0], 0) << " | " << fmt(roiFps[0], 0) << " | 2.8 / - | 2.1 / 6.8 |\n"
-     << "| 320x240 | " << fmt(fullFps[1], 0) << " | " << fmt(roiFps[1], 0) << " | 11.1 / 18.7 | 8.9 / 15.4 |\n\n";
+     << "| 640x480 | " << vpSSLBenchMath::fmt(fullFps[0], 0) << " | " << vpSSLBenchMath::fmt(roiFps[0], 0)
+     << " | 2.8 / - | 2.1 / 6.8 |\n"
+     << "| 320x240 | " << vpSSLBenchMath::fmt(fullFps[1], 0) << " | " << vpSSLBenchMath::fmt(roiFps[1], 0)
+     << " | 11.1 / 18.7 | 8.9 / 15.4 |\n\n";
 }
 } // namespace
 

@@ -436,12 +436,13 @@ std::string summaryLine(const std::string &method, const std::string &water, con
       static_cast<size_t>(std::count_if(detection.begin(), detection.end(), [](double x) { return std::isfinite(x); }));
   std::ostringstream os;
   os << "| " << method << " | " << water << " | " << docked << "/" << runs.size() << " | "
-     << sslbench::fmt(runs.empty() ? NAN : 100. * docked / runs.size(), 0) << " % | "
-     << sslbench::fmt(sslbench::percentile(rms, 50.), 3) << " | " << sslbench::fmt(sslbench::percentile(rms, 90.), 3)
-     << " | " << nbRms << " | " << sslbench::fmt(sslbench::percentile(ttd, 50.), 1) << " | "
-     << sslbench::fmt(sslbench::percentile(ttd, 90.), 1) << " | "
-     << sslbench::fmt(sslbench::percentile(detection, 50.), 1) << " | " << nbDetected << "/" << runs.size() << " | "
-     << collisions << " | " << lost << " |";
+     << vpSSLBenchMath::fmt(runs.empty() ? NAN : 100. * docked / runs.size(), 0) << " % | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(rms, 50.), 3) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(rms, 90.), 3) << " | " << nbRms << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(ttd, 50.), 1) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(ttd, 90.), 1) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(detection, 50.), 1) << " | " << nbDetected << "/" << runs.size()
+     << " | " << collisions << " | " << lost << " |";
   for (const std::string &reason : failureReasons()) {
     os << " " << std::count_if(runs.begin(), runs.end(), [&](const Result *r) { return r->failure == reason; }) << " |";
   }
@@ -632,8 +633,8 @@ static int run(int argc, char **argv)
       byCurrent.addSeries(name, xc, yc, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
       md << "| " << name << " |";
       for (const Bin &b : ranges) {
-        md << " " << b.docked << "/" << b.n << ", " << sslbench::fmt(sslbench::percentile(b.timeToDock, 50.), 1)
-           << " |";
+        md << " " << b.docked << "/" << b.n << ", "
+           << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(b.timeToDock, 50.), 1) << " |";
       }
       md << "\n";
     }

@@ -16,13 +16,15 @@
 #include <unistd.h>
 
 #include <visp3/core/vpIoTools.h>
+#include <visp3/ssl/vpSSLAprilTagBaseline.h>
 #include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
+#include <visp3/ssl/vpSSLDetectionStats.h>
 #include <visp3/ssl/vpSSLPlot.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
-#include "ssl_apriltag_baseline.h"
 #include "ssl_tutorial_common.h"
 
 namespace {
@@ -95,8 +97,6 @@ double parseNumber(const std::string &opt, const std::string &v, double min, dou
   return x;
 }
 
-using sslbench::fmt;
-
 std::string csvNum(double x)
 {
   if (!std::isfinite(x))
@@ -121,8 +121,8 @@ std::string rateCell(size_t d, size_t n)
 {
   if (n == 0)
     return "-";
-  return fmt(static_cast<double>(d) / static_cast<double>(n), 2) + " (" + std::to_string(d) + "/" + std::to_string(n) +
-         ")";
+  return vpSSLBenchMath::fmt(static_cast<double>(d) / static_cast<double>(n), 2) + " (" + std::to_string(d) + "/" +
+         std::to_string(n) + ")";
 }
 
 std::string readText(const std::string &path)
@@ -160,10 +160,10 @@ double extraNumber(const vpSSLSequenceFrame &f, const std::string &col)
 {
   auto it = f.extras.find(col);
   if (it == f.extras.end() || it->second.empty())
-    return sslbench::kNaN;
+    return vpSSLBenchMath::nan();
   char *end = nullptr;
   const double x = std::strtod(it->second.c_str(), &end);
-  return (*end == '\0') ? x : sslbench::kNaN;
+  return (*end == '\0') ? x : vpSSLBenchMath::nan();
 }
 
 //! The water preset named in sequence.json's "water" object, "" when none.
@@ -178,8 +178,8 @@ std::string waterName(const vpSSLSequenceInfo &info)
 struct SequenceResult
 {
   std::string folder, name, method, water, key;
-  sslbench::Stats stats;
-  std::map<std::string, sslbench::Stats> byWater;
+  vpSSLDetectionStats stats;
+  std::map<std::string, vpSSLDetectionStats> byWater;
 };
 
 class Progress
@@ -238,12 +238,12 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
   const vpCameraParameters &cam = reader.getCameraParameters();
 
   const bool isTag = vpSSLAprilTagSheet::isName(info.target);
-  std::unique_ptr<sslbench::AprilTagBaseline> baseline;
+  std::unique_ptr<vpSSLAprilTagBaseline> baseline;
   std::unique_ptr<vpSSLTracker> tracker;
   vpSSLTarget target;
   if (isTag) {
     res.method = "AprilTag";
-    baseline.reset(new sslbench::AprilTagBaseline(vpSSLAprilTagSheet::fromName(info.target), cam));
+    baseline.reset(new vpSSLAprilTagBaseline(vpSSLAprilTagSheet::fromName(info.target), cam));
     baseline->setQuadDecimate(opt.decimate);
   } else {
     res.method = "SSL";
@@ -259,7 +259,7 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
   std::map<std::string, bool> waters;
   while ((opt.maxFrames == 0 || n < opt.maxFrames) && reader.next(f, I)) {
     ++n;
-    sslbench::FrameResult r;
+    vpSSLFrameResult r;
     r.truthKnown = simulated || f.hasGroundTruth;
     r.hasTarget = f.hasGroundTruth;
     r.range = extraNumber(f, "range");
@@ -299,9 +299,9 @@ SequenceResult runSequence(const std::string &folder, const Options &opt, Progre
     // One landmark alone gives the tracker a position and no orientation: its rotation means nothing.
     r.orientationKnown = isTag || tracker->getOrientationKnown();
     if (r.detected && f.hasGroundTruth) {
-      r.positionError = sslbench::positionError(cMo, truth);
+      r.positionError = vpSSLBenchMath::positionError(cMo, truth);
       if (r.orientationKnown)
-        r.angleError = sslbench::angleError(cMo, truth);
+        r.angleError = vpSSLBenchMath::angleError(cMo, truth);
       if (isTag) {
         double u = 0., v = 0.;
         bool ok = true;
@@ -360,7 +360,7 @@ const char *kMainHeader =
     "|---|---|---|---:|---|---|---|---|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
 
 std::string mainRow(const std::string &name, const std::string &method, const std::string &water,
-                    const sslbench::Stats &s)
+                    const vpSSLDetectionStats &s)
 {
   std::ostringstream os;
   const bool anyTruth = s.nbWithTarget > 0;
@@ -369,31 +369,32 @@ std::string mainRow(const std::string &name, const std::string &method, const st
      << " |";
   for (size_t b = 0; b < s.bandFrames.size(); ++b)
     os << " " << rateCell(s.bandDetected[b], s.bandFrames[b]) << " |";
-  os << " " << fmt(s.range90(), 1) << " | " << fmt(sslbench::percentile(s.centre, 50.), 2) << " | "
-     << fmt(sslbench::percentile(s.position, 50.), 3) << " | " << fmt(sslbench::percentile(s.angle, 50.), 2) << " | "
-     << s.nbPositionOnly << " | "
+  os << " " << vpSSLBenchMath::fmt(s.range90(), 1) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(s.centre, 50.), 2) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(s.position, 50.), 3) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(s.angle, 50.), 2) << " | " << s.nbPositionOnly << " | "
      << (s.nbNoTarget > 0 || s.nbFalse > 0 ? std::to_string(s.nbFalse) + " / " + std::to_string(s.nbNoTarget) : "-")
-     << " | " << fmt(sslbench::percentile(s.time, 50.), 2) << " | " << fmt(sslbench::percentile(s.time, 95.), 2)
-     << " |\n";
+     << " | " << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(s.time, 50.), 2) << " | "
+     << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(s.time, 95.), 2) << " |\n";
   return os.str();
 }
 
 void summaryCsvRow(std::ostream &os, const std::string &scope, const std::string &method, const std::string &water,
-                   const sslbench::Stats &s)
+                   const vpSSLDetectionStats &s)
 {
   os << csvField(scope) << "," << method << "," << csvField(water) << "," << s.nbFrames << "," << s.nbWithTarget << ","
      << s.nbDetected << "," << csvNum(s.rate());
   for (size_t b = 0; b < s.bandFrames.size(); ++b)
     os << "," << s.bandFrames[b] << "," << csvNum(s.bandRate(b));
-  os << "," << csvNum(s.range90()) << "," << csvNum(sslbench::percentile(s.centre, 50.)) << ","
-     << csvNum(sslbench::percentile(s.position, 50.)) << "," << csvNum(sslbench::percentile(s.angle, 50.)) << ","
-     << s.nbNoTarget << "," << s.nbFalse << "," << csvNum(sslbench::percentile(s.time, 50.)) << ","
-     << csvNum(sslbench::percentile(s.time, 95.)) << "," << s.nbPositionOnly << "\n";
+  os << "," << csvNum(s.range90()) << "," << csvNum(vpSSLBenchMath::percentile(s.centre, 50.)) << ","
+     << csvNum(vpSSLBenchMath::percentile(s.position, 50.)) << "," << csvNum(vpSSLBenchMath::percentile(s.angle, 50.))
+     << "," << s.nbNoTarget << "," << s.nbFalse << "," << csvNum(vpSSLBenchMath::percentile(s.time, 50.)) << ","
+     << csvNum(vpSSLBenchMath::percentile(s.time, 95.)) << "," << s.nbPositionOnly << "\n";
 }
 
 int checkVispBenchmark(const std::string &dir)
 {
-  std::vector<sslbench::VispBenchmarkResult> res = sslbench::runOnVispBenchmark(dir);
+  std::vector<vpSSLAprilTagBaseline::BenchmarkResult> res = vpSSLAprilTagBaseline::runOnVispBenchmark(dir);
   std::cout << "AprilTag baseline on " << dir << "/tag36_11_640x480.png (ViSP testAprilTag's setup)\n\n"
             << "| tag id | tag size (m) | position err (mm) | angle err (deg) | ViSP RMS t (m) | ViSP RMS tu (rad) |\n"
             << "|---:|---:|---:|---:|---:|---:|\n";
@@ -401,9 +402,10 @@ int checkVispBenchmark(const std::string &dir)
   for (size_t i = 0; i < res.size(); ++i) {
     if (res[i].id < 0)
       ++missing;
-    std::cout << "| " << i << " | " << (i < 3 ? "0.200" : "0.100") << " | " << fmt(1000. * res[i].positionError, 2)
-              << " | " << fmt(res[i].angleError, 3) << " | " << fmt(res[i].rmsTranslation, 4) << " | "
-              << fmt(res[i].rmsThetaU, 4) << " |\n";
+    std::cout << "| " << i << " | " << (i < 3 ? "0.200" : "0.100") << " | "
+              << vpSSLBenchMath::fmt(1000. * res[i].positionError, 2) << " | "
+              << vpSSLBenchMath::fmt(res[i].angleError, 3) << " | " << vpSSLBenchMath::fmt(res[i].rmsTranslation, 4)
+              << " | " << vpSSLBenchMath::fmt(res[i].rmsThetaU, 4) << " |\n";
   }
   if (missing > 0) {
     std::cerr << "tutorial-ssl-vs-apriltag: " << missing << " of 5 tags not detected" << std::endl;
@@ -412,7 +414,7 @@ int checkVispBenchmark(const std::string &dir)
   return 0;
 }
 
-void addPlots(const std::map<std::string, sslbench::Stats> &byMethodWater, double bin, const std::string &dir)
+void addPlots(const std::map<std::string, vpSSLDetectionStats> &byMethodWater, double bin, const std::string &dir)
 {
   double maxRange = 1.;
   for (const auto &kv : byMethodWater)
@@ -519,8 +521,8 @@ int run(int argc, char **argv)
   }
 
   // Aggregates: per method, per method and water preset.
-  std::map<std::string, sslbench::Stats> byMethod;
-  std::map<std::string, sslbench::Stats> byMethodWater;
+  std::map<std::string, vpSSLDetectionStats> byMethod;
+  std::map<std::string, vpSSLDetectionStats> byMethodWater;
   for (const SequenceResult &r : results) {
     byMethod[r.method].merge(r.stats);
     for (const auto &kv : r.byWater)
@@ -563,8 +565,8 @@ int run(int argc, char **argv)
   report << md.str();
   std::ofstream summary(opt.outputDir + "/summary.csv");
   summary << "scope,method,water,frames,frames_with_target,detected,rate";
-  for (size_t b = 0; b + 1 < sslbench::bandEdges().size(); ++b)
-    summary << ",frames_" << sslbench::bandLabel(b) << "m,rate_" << sslbench::bandLabel(b) << "m";
+  for (size_t b = 0; b + 1 < vpSSLBenchMath::bandEdges().size(); ++b)
+    summary << ",frames_" << vpSSLBenchMath::bandLabel(b) << "m,rate_" << vpSSLBenchMath::bandLabel(b) << "m";
   summary << ",range90_m,centre_err_px,position_err_m,angle_err_deg,frames_without_target,false_detections,"
              "time_median_ms,time_p95_ms,position_only_frames\n";
   for (const SequenceResult &r : results)
