@@ -1,5 +1,5 @@
 /*
-  The AUV driver skeleton users copy (tutorial/vpSSLRobotAuvTemplate.h): each control frame of
+  The AUV driver skeleton users copy (modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h): each control frame of
   vpRobot::setVelocity() reaches the vehicle as the body twist it means, within the limits and with its
   direction kept, and what is not a velocity command is refused.
 */
@@ -12,7 +12,7 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/ssl/vpSSLServoLaw.h>
 
-#include "../tutorial/vpSSLRobotAuvTemplate.h"
+#include <visp3/ssl/vpSSLRobotAuvTemplate.h>
 
 namespace {
 // A camera that gives a black image: the tests read the navigation only.

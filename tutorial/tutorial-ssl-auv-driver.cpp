@@ -1,8 +1,9 @@
 //! \example tutorial-ssl-auv-driver.cpp
-//! The homing loop of doc/servo.md on a vehicle driver: vpSSLRobotAuvTemplate (tutorial/vpSSLRobotAuvTemplate.h),
-//! the skeleton of a ViSP robot driver to copy for a real AUV, driven by vpSSLHomingBehaviour through
-//! vpRobot::setVelocity(). Its camera here is a vpFrameGrabber that renders the ssl3-a3 target at the vehicle's
-//! pose; on a vehicle it is the camera's grabber (vpV4l2Grabber, ...), and the loop below stays the same.
+//! The homing loop of doc/servo.md on a vehicle driver: vpSSLRobotAuvTemplate
+//! (modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h), the skeleton of a ViSP robot driver to copy for a real
+//! AUV, driven by vpSSLHomingBehaviour through vpRobot::setVelocity(). Its camera here is a vpFrameGrabber that renders
+//! the ssl3-a3 target at the vehicle's pose; on a vehicle it is the camera's grabber (vpV4l2Grabber, ...), and the loop
+//! below stays the same.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -17,17 +18,17 @@
 #include <visp3/ssl/vpSSLTracker.h>
 
 #include "ssl_tutorial_common.h"
-#include "vpSSLRobotAuvTemplate.h"
+#include <visp3/ssl/vpSSLRobotAuvTemplate.h>
 
 namespace {
 const char *kProgram = "tutorial-ssl-auv-driver";
 
 const char *kUsage = R"(Usage: tutorial-ssl-auv-driver [options]
 Runs the homing loop of doc/servo.md on vpSSLRobotAuvTemplate, the skeleton of a ViSP robot driver for an AUV
-(tutorial/vpSSLRobotAuvTemplate.h: copy it and fill in your vehicle's autopilot and navigation). As shipped its
-navigation is a perfect vehicle and its camera renders the ssl3-a3 target at the vehicle's pose (320x240, the
-target 4 m ahead, off the axis and turned). Each step: acquire (image, odometry, depth, collision), track,
-vpSSLHomingBehaviour::update(), apply() (setVelocity(ARTICULAR_FRAME, surge sway heave p q r)).
+(modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h: copy it and fill in your vehicle's autopilot and
+navigation). As shipped its navigation is a perfect vehicle and its camera renders the ssl3-a3 target at the
+vehicle's pose (320x240, the target 4 m ahead, off the axis and turned). Each step: acquire (image, odometry, depth,
+collision), track, vpSSLHomingBehaviour::update(), apply() (setVelocity(ARTICULAR_FRAME, surge sway heave p q r)).
 Prints every change of state and a final line. (No docking: the stand-in vehicle has no collision switch.)
 Options:
   --steps N            Control steps of 0.2 s (1 to 100000; default 300).

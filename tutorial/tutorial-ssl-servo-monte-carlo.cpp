@@ -27,18 +27,18 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpRxyzVector.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
+#include <visp3/ssl/vpSSLClosedLoop.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLPlot.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
-#include "ssl_servo_loop.h"
-
 #include "ssl_tutorial_common.h"
 
 namespace {
-using sslservo::parseDouble;
-using sslservo::parseInteger;
-using sslservo::UsageError;
+using ssltut::parseInteger;
+using ssltut::parseNumber;
+using ssltut::UsageError;
 
 const char *kUsage = R"(Usage: tutorial-ssl-servo-monte-carlo [options]
 Monte Carlo docking benchmark: N runs of the whole mission in the closed loop of tutorial-ssl-servo (simulated AUV,
@@ -92,7 +92,8 @@ struct Options
 {
   long runs = 20;
   long seed = 1;
-  std::vector<sslservo::Method> methods = {sslservo::Method::Ssl, sslservo::Method::AprilTag, sslservo::Method::Truth};
+  std::vector<vpSSLClosedLoop::Method> methods = {vpSSLClosedLoop::Method::Ssl, vpSSLClosedLoop::Method::AprilTag,
+                                                  vpSSLClosedLoop::Method::Truth};
   double timeLimit = 240.;
   double startRangeMin = 2., startRangeMax = 8.;
   double startHeading = 180.;
@@ -107,14 +108,14 @@ struct Options
   bool quiet = false;
 };
 
-std::vector<sslservo::Method> parseMethods(const std::string &text)
+std::vector<vpSSLClosedLoop::Method> parseMethods(const std::string &text)
 {
-  std::vector<sslservo::Method> methods;
+  std::vector<vpSSLClosedLoop::Method> methods;
   std::stringstream ss(text);
   std::string name;
   while (std::getline(ss, name, ',')) {
-    sslservo::Method m;
-    if (!sslservo::parseMethod(name, m)) {
+    vpSSLClosedLoop::Method m;
+    if (!vpSSLClosedLoop::parseMethod(name, m)) {
       throw UsageError{"--methods: unknown \"" + name + "\" (ssl, apriltag, truth, ssl-raw, apriltag-raw)"};
     }
     if (std::find(methods.begin(), methods.end(), m) != methods.end()) {
@@ -149,7 +150,7 @@ Options parse(int argc, char **argv, bool &help)
     } else if (a == "--methods") {
       o.methods = parseMethods(value());
     } else if (a == "--time-limit") {
-      o.timeLimit = parseDouble(a, value());
+      o.timeLimit = parseNumber(a, value());
       if (o.timeLimit <= 0. || o.timeLimit > 3600.) {
         throw UsageError{"--time-limit: expected a value in (0, 3600] s"};
       }
@@ -163,7 +164,7 @@ Options parse(int argc, char **argv, bool &help)
       o.startRangeMin = lo;
       o.startRangeMax = hi;
     } else if (a == "--start-heading") {
-      o.startHeading = parseDouble(a, value());
+      o.startHeading = parseNumber(a, value());
       if (o.startHeading < 0. || o.startHeading > 180.) {
         throw UsageError{"--start-heading: expected a value in [0, 180] deg"};
       }
@@ -173,7 +174,7 @@ Options parse(int argc, char **argv, bool &help)
         throw UsageError{"--water: expected clear, coastal or mixed, got \"" + o.water + "\""};
       }
     } else if (a == "--max-current") {
-      o.maxCurrent = parseDouble(a, value());
+      o.maxCurrent = parseNumber(a, value());
       if (o.maxCurrent < 0. || o.maxCurrent > 2.) {
         throw UsageError{"--max-current: expected a value in [0, 2] m/s"};
       }
@@ -235,12 +236,12 @@ double uniform(std::mt19937_64 &g, double a, double b)
   return a + (b - a) * static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
 
-sslservo::Scene makeScene(const Draw &d, const Options &opt);
+vpSSLClosedLoop::Scene makeScene(const Draw &d, const Options &opt);
 
 // Whether a corner of the target's sheet projects into the image from the start of \e d.
 bool sheetInView(const Draw &d, const Options &opt, const vpCameraParameters &cam)
 {
-  const sslservo::Scene scene = makeScene(d, opt);
+  const vpSSLClosedLoop::Scene scene = makeScene(d, opt);
   const vpHomogeneousMatrix cMo =
       (scene.wMvStart * vpSSLScenario::getDefaultCameraToVehicle()).inverse() * scene.wMoHome;
   const vpSSLTarget target = vpSSLTarget::ssl3a3();
@@ -289,9 +290,9 @@ Draw makeDraw(long seed, int run, const Options &opt, const vpCameraParameters &
   return d;
 }
 
-sslservo::Scene makeScene(const Draw &d, const Options &opt)
+vpSSLClosedLoop::Scene makeScene(const Draw &d, const Options &opt)
 {
-  sslservo::Scene s;
+  vpSSLClosedLoop::Scene s;
   s.water = d.coastal ? "coastal" : "clear";
   s.standOff = d.coastal ? 1.5 : 2.0;
   s.autoDockHold = opt.dockHold;
@@ -326,19 +327,19 @@ struct Result
   double wallTime = 0.;      // not written: it depends on the load and the thread count
 };
 
-Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &cam, const Options &opt)
+Result runOne(const Draw &d, vpSSLClosedLoop::Method method, const vpCameraParameters &cam, const Options &opt)
 {
   const auto start = std::chrono::steady_clock::now();
-  const sslservo::Scene scene = makeScene(d, opt);
-  sslservo::ClosedLoop loop(scene, method, cam, opt.width, opt.height, 1, d.seed);
+  const vpSSLClosedLoop::Scene scene = makeScene(d, opt);
+  vpSSLClosedLoop loop(scene, method, cam, opt.width, opt.height, 1, d.seed);
   Result res;
   res.startRange = loop.getAuv().get_cMo().getTranslationVector().frobeniusNorm();
-  std::vector<sslservo::Row> rows;
+  std::vector<vpSSLClosedLoop::Row> rows;
   const int nbSteps = static_cast<int>(std::lround(opt.timeLimit / scene.timeStep));
   vpSSLHomingState previous = SSL_HOMING_SEARCH;
   bool previousCollision = false;
   for (int k = 0; k <= nbSteps; ++k) {
-    const sslservo::Row r = loop.step(k);
+    const vpSSLClosedLoop::Row r = loop.step(k);
     rows.push_back(r);
     if (r.seen && !std::isfinite(res.firstDetection)) {
       res.firstDetection = r.t;
@@ -382,10 +383,10 @@ Result runOne(const Draw &d, sslservo::Method method, const vpCameraParameters &
   } else {
     res.failure = "hold-not-reached";
   }
-  res.standOffRms = sslservo::standOffRms(rows, scene.standOff, res.settledSteps);
+  res.standOffRms = vpSSLClosedLoop::standOffRms(rows, scene.standOff, res.settledSteps);
   if (opt.traces) {
-    sslservo::writeRows(opt.outputDir + "/run-" + std::to_string(d.run) + "-" + sslservo::methodName(method) + ".csv",
-                        rows);
+    vpSSLClosedLoop::writeRows(
+        opt.outputDir + "/run-" + std::to_string(d.run) + "-" + vpSSLClosedLoop::methodName(method) + ".csv", rows);
   }
   res.wallTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
@@ -462,7 +463,7 @@ static int run(int argc, char **argv)
       return EXIT_SUCCESS;
     }
   } catch (const UsageError &e) {
-    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.message << std::endl;
+    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.what() << std::endl;
     return 2;
   }
 
@@ -470,7 +471,7 @@ static int run(int argc, char **argv)
     if (!vpIoTools::checkDirectory(opt.outputDir)) {
       vpIoTools::makeDirectory(opt.outputDir);
     }
-    const vpCameraParameters cam = sslservo::scaledCamera(opt.width, opt.height);
+    const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
     const double coastalVisibility = vpSSLWaterModel::preset("coastal").getVisibility();
 
     // Jobs: run-major, so that with several threads the methods of one run progress together.
@@ -497,7 +498,7 @@ static int run(int argc, char **argv)
 #endif
       for (size_t j = next++; j < nbJobs; j = next++) {
         const Draw &d = draws[j / nbMethods];
-        const sslservo::Method m = opt.methods[j % nbMethods];
+        const vpSSLClosedLoop::Method m = opt.methods[j % nbMethods];
         try {
           results[j] = runOne(d, m, cam, opt);
         } catch (const vpException &e) {
@@ -510,7 +511,7 @@ static int run(int argc, char **argv)
           std::lock_guard<std::mutex> lock(printMutex);
           const Result &r = results[j];
           std::fprintf(stderr, "%zu/%zu run %d %s %s: %s, %.1f s wall\n", n, nbJobs, d.run,
-                       sslservo::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
+                       vpSSLClosedLoop::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
                        !errors[j].empty() ? "error"
                        : r.docked         ? ("docked at " + num(r.timeToDock, 1) + " s").c_str()
                                           : ("not docked, " + vpSSLHomingBehaviour::getStateName(r.finalState)).c_str(),
@@ -534,7 +535,7 @@ static int run(int argc, char **argv)
     for (size_t j = 0; j < nbJobs; ++j) {
       if (!errors[j].empty()) {
         throw vpException(vpException::fatalError, "run %d, method %s: %s", draws[j / nbMethods].run,
-                          sslservo::methodName(opt.methods[j % nbMethods]).c_str(), errors[j].c_str());
+                          vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]).c_str(), errors[j].c_str());
       }
     }
 
@@ -550,7 +551,7 @@ static int run(int argc, char **argv)
     for (size_t j = 0; j < nbJobs; ++j) {
       const Draw &d = draws[j / nbMethods];
       const Result &r = results[j];
-      csv << d.run << ',' << sslservo::methodName(opt.methods[j % nbMethods]) << ','
+      csv << d.run << ',' << vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]) << ','
           << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << num(d.distance, 3) << ',' << num(d.lateral, 3)
           << ',' << num(vpMath::deg(d.heading), 2) << ',' << num(d.depthOffset, 3) << ',' << num(d.currentSpeed, 3)
           << ',' << num(vpMath::deg(d.currentDir), 1) << ',' << num(d.coastal ? 1.5 : 2.0, 1) << ','
@@ -587,7 +588,7 @@ static int run(int argc, char **argv)
             runs.push_back(&results[i * nbMethods + m]);
           }
         }
-        md << summaryLine(sslservo::methodName(opt.methods[m]), water, runs);
+        md << summaryLine(vpSSLClosedLoop::methodName(opt.methods[m]), water, runs);
       }
     }
 
@@ -628,7 +629,7 @@ static int run(int argc, char **argv)
       std::vector<double> xr, yr, xc, yc;
       curve(ranges, rangeBin, xr, yr);
       curve(currents, currentBin, xc, yc);
-      const std::string name = sslservo::methodName(opt.methods[m]);
+      const std::string name = vpSSLClosedLoop::methodName(opt.methods[m]);
       byRange.addSeries(name, xr, yr, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
       byCurrent.addSeries(name, xc, yc, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
       md << "| " << name << " |";

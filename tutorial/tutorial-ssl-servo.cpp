@@ -14,17 +14,16 @@
 #include <vector>
 
 #include <visp3/core/vpIoTools.h>
+#include <visp3/ssl/vpSSLClosedLoop.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLPlot.h>
-
-#include "ssl_servo_loop.h"
 
 #include "ssl_tutorial_common.h"
 
 namespace {
-using sslservo::parseDouble;
-using sslservo::parseInteger;
-using sslservo::UsageError;
+using ssltut::parseInteger;
+using ssltut::parseNumber;
+using ssltut::UsageError;
 
 const char *kUsage = R"(Usage: tutorial-ssl-servo [options]
 Closes the homing loop of the paper's Sec. 5 on the simulated AUV: at each control step (5 Hz) the camera
@@ -89,12 +88,12 @@ Options parse(int argc, char **argv, bool &help)
       }
     } else if (a == "--method") {
       o.method = value();
-      sslservo::Method m;
-      if (!sslservo::parseMethod(o.method, m)) {
+      vpSSLClosedLoop::Method m;
+      if (!vpSSLClosedLoop::parseMethod(o.method, m)) {
         throw UsageError{"--method: unknown \"" + o.method + "\" (ssl, apriltag, truth, ssl-raw, apriltag-raw)"};
       }
     } else if (a == "--duration") {
-      o.duration = parseDouble(a, value());
+      o.duration = parseNumber(a, value());
       if (o.duration <= 0. || o.duration > 3600.) {
         throw UsageError{"--duration: expected a value in (0, 3600] s"};
       }
@@ -143,7 +142,7 @@ std::string num(double x, int digits)
 }
 } // namespace
 
-using sslservo::Row;
+using Row = vpSSLClosedLoop::Row;
 
 static int run(int argc, char **argv)
 {
@@ -156,11 +155,11 @@ static int run(int argc, char **argv)
       return EXIT_SUCCESS;
     }
   } catch (const UsageError &e) {
-    std::cerr << "tutorial-ssl-servo: " << e.message << std::endl;
+    std::cerr << "tutorial-ssl-servo: " << e.what() << std::endl;
     return 2;
   }
-  sslservo::Method method = sslservo::Method::Ssl;
-  sslservo::parseMethod(opt.method, method); // checked by parse()
+  vpSSLClosedLoop::Method method = vpSSLClosedLoop::Method::Ssl;
+  vpSSLClosedLoop::parseMethod(opt.method, method); // checked by parse()
   const std::string base = opt.outputDir + "/servo-" + opt.scenario + "-" + opt.method;
 
   try {
@@ -168,14 +167,14 @@ static int run(int argc, char **argv)
       vpIoTools::makeDirectory(opt.outputDir);
     }
     // The camera of the paper's vehicle, scaled to the requested image size (same field of view).
-    const vpCameraParameters cam = sslservo::scaledCamera(opt.width, opt.height);
+    const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
     // Scenario figures (paper Sec. 5).
     const double D = opt.duration;
     const bool field = opt.scenario == "field";
-    const sslservo::Scene scene = sslservo::paperScene(opt.scenario, D);
+    const vpSSLClosedLoop::Scene scene = vpSSLClosedLoop::paperScene(opt.scenario, D);
     const double standOff = scene.standOff;
-    sslservo::ClosedLoop loop(scene, method, cam, opt.width, opt.height, static_cast<unsigned int>(opt.supersampling),
-                              opt.seed);
+    vpSSLClosedLoop loop(scene, method, cam, opt.width, opt.height, static_cast<unsigned int>(opt.supersampling),
+                         opt.seed);
     vpSSLAuvSimulator &auv = loop.getAuv();
     const vpSSLHomingBehaviour &homing = loop.getHoming();
 
@@ -205,7 +204,7 @@ static int run(int argc, char **argv)
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    sslservo::writeRows(base + ".csv", rows);
+    vpSSLClosedLoop::writeRows(base + ".csv", rows);
 
     // Figure.
     auto column = [&](double Row::*field) {
@@ -274,9 +273,9 @@ static int run(int argc, char **argv)
     }
     vpSSLPlot::saveStacked(panels, base + ".png");
 
-    // Summary: stand-off RMS error over the settled HOME steps (sslservo::standOffRms()).
+    // Summary: stand-off RMS error over the settled HOME steps (vpSSLClosedLoop::standOffRms()).
     size_t n = 0;
-    const double rms = sslservo::standOffRms(rows, standOff, n);
+    const double rms = vpSSLClosedLoop::standOffRms(rows, standOff, n);
     std::printf("scenario %s, method %s, %.0f s simulated in %.1f s (%.0f ms/step, %ux%u, %d spp): final state %s, "
                 "stand-off RMS %s m over %zu settled HOME steps, time to dock %s s -> %s.csv/.png\n",
                 opt.scenario.c_str(), opt.method.c_str(), rows.empty() ? 0. : rows.back().t, elapsed,

@@ -1,7 +1,8 @@
 /*!
   \file vpSSLRobotAuvTemplate.h
   \brief Skeleton of a ViSP robot driver for an AUV, in the style of ViSP's vpRobotTemplate: copy this file into
-  your project and fill in the two places marked "YOUR VEHICLE". Header-only, used by tutorial-ssl-auv-driver.
+  your project and fill in the two places marked "YOUR VEHICLE". Header-only (no visp_ssl_harness code needed), used
+  by tutorial-ssl-auv-driver and test_auv_driver_template.
 */
 #ifndef VP_SSL_ROBOT_AUV_TEMPLATE_H
 #define VP_SSL_ROBOT_AUV_TEMPLATE_H
@@ -22,6 +23,7 @@
 
 /*!
   \class vpSSLRobotAuvTemplate
+  \ingroup group_ssl_harness
   \brief A velocity-controlled AUV as a vpRobot, so that vpSSLHomingBehaviour::apply() (or any ViSP servo loop)
   drives it, with the camera and the navigation a homing loop needs.
 
