@@ -86,7 +86,7 @@ int run(int argc, char **argv)
     } else if (a == "--small_landmarks") {
       small_landmarks = true;
     } else if (a == "--nthreads") {
-      nThreads = static_cast<unsigned int>(ssltut::parseInteger(a, value(), 0, 256));
+      nThreads = ssltut::parseThreads(a, value(), true, 256);
     } else if (a == "--intrinsic") {
       intrinsic_file = value();
     } else if (a == "--camera_name") {

@@ -25,6 +25,8 @@
 #include <visp3/ssl/vpSSLCorpusView.h>
 #include <visp3/ssl/vpSSLDetector.h>
 
+#include "ssl_tutorial_options.h"
+
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-detector-recall [options]
 
@@ -89,8 +91,13 @@ bool parse(int argc, char **argv, Options &o)
       o.negatives = static_cast<unsigned int>(v);
     } else if (a == "--seed" && value(v)) {
       o.seed = v;
-    } else if (a == "--threads" && value(v) && v >= 1) {
-      o.threads = static_cast<unsigned int>(v);
+    } else if (a == "--threads" && i + 1 < argc) {
+      try {
+        o.threads = ssltut::parseThreads(a, argv[++i], false, 256);
+      } catch (const ssltut::UsageError &e) {
+        std::cerr << "tutorial-ssl-detector-recall: " << e.what() << std::endl;
+        return false;
+      }
     } else if (a == "--save-images" && value(v)) {
       o.saveImages = static_cast<unsigned int>(v);
     } else if (a == "--save-misses" && value(v)) {

@@ -260,7 +260,7 @@ int run(int argc, char **argv)
     } else if (a == "--no-normalize") {
       normalize = false;
     } else if (a == "--threads") {
-      threads = static_cast<unsigned int>(integer(value(), 0, 256));
+      threads = ssltut::parseThreads("option " + a, value(), true, 256);
     } else if (a == "--max-frames") {
       maxFrames = static_cast<long>(integer(value(), 0, 1000000000));
     } else {

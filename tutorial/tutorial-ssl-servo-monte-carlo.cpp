@@ -135,12 +135,7 @@ Options parse(int argc, char **argv, bool &help)
   help = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw UsageError{a + " needs a value"};
-      }
-      return argv[++i];
-    };
+    auto value = [&]() { return ssltut::optionValue(argc, argv, i); };
     if (a == "--help" || a == "-h") {
       help = true;
     } else if (a == "--runs") {
@@ -192,7 +187,7 @@ Options parse(int argc, char **argv, bool &help)
     } else if (a == "--traces") {
       o.traces = true;
     } else if (a == "--threads") {
-      o.threads = parseInteger(a, value(), 1, 64);
+      o.threads = ssltut::parseThreads(a, value(), false, 64);
     } else if (a == "--output-dir") {
       o.outputDir = value();
     } else if (a == "--width") {
@@ -392,16 +387,6 @@ Result runOne(const Draw &d, vpSSLClosedLoop::Method method, const vpCameraParam
   return res;
 }
 
-std::string num(double x, int digits)
-{
-  if (!std::isfinite(x)) {
-    return "";
-  }
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
-  return buf;
-}
-
 // The failure reasons, in the order of the summary's columns.
 const std::vector<std::string> &failureReasons()
 {
@@ -454,17 +439,12 @@ std::string summaryLine(const std::string &method, const std::string &water, con
 
 static int run(int argc, char **argv)
 {
-  Options opt;
-  try {
-    bool help = false;
-    opt = parse(argc, argv, help);
-    if (help) {
-      std::cout << kUsage;
-      return EXIT_SUCCESS;
-    }
-  } catch (const UsageError &e) {
-    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.what() << std::endl;
-    return 2;
+  // A bad option throws UsageError: guardedMain() prints it on one line and returns 2.
+  bool help = false;
+  const Options opt = parse(argc, argv, help);
+  if (help) {
+    std::cout << kUsage;
+    return EXIT_SUCCESS;
   }
 
   try {
@@ -513,7 +493,7 @@ static int run(int argc, char **argv)
           std::fprintf(stderr, "%zu/%zu run %d %s %s: %s, %.1f s wall\n", n, nbJobs, d.run,
                        vpSSLClosedLoop::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
                        !errors[j].empty() ? "error"
-                       : r.docked         ? ("docked at " + num(r.timeToDock, 1) + " s").c_str()
+                       : r.docked         ? ("docked at " + vpSSLBenchMath::csvNumber(r.timeToDock, 1) + " s").c_str()
                                           : ("not docked, " + vpSSLHomingBehaviour::getStateName(r.finalState)).c_str(),
                        r.wallTime);
         }
@@ -552,13 +532,17 @@ static int run(int argc, char **argv)
       const Draw &d = draws[j / nbMethods];
       const Result &r = results[j];
       csv << d.run << ',' << vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]) << ','
-          << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << num(d.distance, 3) << ',' << num(d.lateral, 3)
-          << ',' << num(vpMath::deg(d.heading), 2) << ',' << num(d.depthOffset, 3) << ',' << num(d.currentSpeed, 3)
-          << ',' << num(vpMath::deg(d.currentDir), 1) << ',' << num(d.coastal ? 1.5 : 2.0, 1) << ','
-          << num(r.startRange, 3) << ',' << (r.docked ? 1 : 0) << ',' << num(r.timeToDock, 1) << ','
-          << num(r.standOffRms, 4) << ',' << r.settledSteps << ',' << num(r.firstDetection, 1) << ','
-          << r.collisionsOutsideDock << ',' << r.lostEvents << ',' << vpSSLHomingBehaviour::getStateName(r.finalState)
-          << ',' << num(r.simTime, 1) << ',' << (d.inView ? 1 : 0) << ',' << r.failure << '\n';
+          << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << vpSSLBenchMath::csvNumber(d.distance, 3)
+          << ',' << vpSSLBenchMath::csvNumber(d.lateral, 3) << ','
+          << vpSSLBenchMath::csvNumber(vpMath::deg(d.heading), 2) << ',' << vpSSLBenchMath::csvNumber(d.depthOffset, 3)
+          << ',' << vpSSLBenchMath::csvNumber(d.currentSpeed, 3) << ','
+          << vpSSLBenchMath::csvNumber(vpMath::deg(d.currentDir), 1) << ','
+          << vpSSLBenchMath::csvNumber(d.coastal ? 1.5 : 2.0, 1) << ',' << vpSSLBenchMath::csvNumber(r.startRange, 3)
+          << ',' << (r.docked ? 1 : 0) << ',' << vpSSLBenchMath::csvNumber(r.timeToDock, 1) << ','
+          << vpSSLBenchMath::csvNumber(r.standOffRms, 4) << ',' << r.settledSteps << ','
+          << vpSSLBenchMath::csvNumber(r.firstDetection, 1) << ',' << r.collisionsOutsideDock << ',' << r.lostEvents
+          << ',' << vpSSLHomingBehaviour::getStateName(r.finalState) << ',' << vpSSLBenchMath::csvNumber(r.simTime, 1)
+          << ',' << (d.inView ? 1 : 0) << ',' << r.failure << '\n';
     }
     csv.close();
     if (!csv) {
@@ -568,11 +552,13 @@ static int run(int argc, char **argv)
     // summary.md
     std::ostringstream md;
     md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
-       << opt.height << ", " << opt.water << " water, start range " << num(opt.startRangeMin, 1) << "-"
-       << num(opt.startRangeMax, 1) << " m, heading +-" << num(opt.startHeading, 0) << " deg, time limit "
-       << num(opt.timeLimit, 0) << " s, current up to " << num(opt.maxCurrent, 2) << " m/s, auto-dock after "
-       << num(opt.dockHold, 1) << " s within " << num(opt.dockRange, 2) << " m of the stand-off and "
-       << num(opt.dockAngle, 0) << " deg of the optical axis\n\n";
+       << opt.height << ", " << opt.water << " water, start range " << vpSSLBenchMath::csvNumber(opt.startRangeMin, 1)
+       << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m, heading +-"
+       << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
+       << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, current up to "
+       << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
+       << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
+       << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis\n\n";
     md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
           "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
           "lost-target events |";
@@ -601,7 +587,8 @@ static int run(int argc, char **argv)
     md << "\nBy start range (camera to target centre at the start): docked / runs, time to dock median (s)\n\n"
        << "| method |";
     for (size_t b = 0; b < nbRangeBins; ++b) {
-      md << " " << num(b * rangeBin, 0) << "-" << num((b + 1) * rangeBin, 0) << " m |";
+      md << " " << vpSSLBenchMath::csvNumber(b * rangeBin, 0) << "-" << vpSSLBenchMath::csvNumber((b + 1) * rangeBin, 0)
+         << " m |";
     }
     md << "\n|---|";
     for (size_t b = 0; b < nbRangeBins; ++b) {

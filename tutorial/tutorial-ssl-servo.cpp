@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <visp3/core/vpIoTools.h>
+#include <visp3/ssl/vpSSLBenchMath.h>
 #include <visp3/ssl/vpSSLClosedLoop.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLPlot.h>
@@ -73,12 +74,7 @@ Options parse(int argc, char **argv, bool &help)
   help = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw UsageError{a + " needs a value"};
-      }
-      return argv[++i];
-    };
+    auto value = [&]() { return ssltut::optionValue(argc, argv, i); };
     if (a == "--help" || a == "-h") {
       help = true;
     } else if (a == "--scenario") {
@@ -131,32 +127,18 @@ Options parse(int argc, char **argv, bool &help)
   return o;
 }
 
-std::string num(double x, int digits)
-{
-  if (!std::isfinite(x)) {
-    return "";
-  }
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", digits, x);
-  return buf;
-}
 } // namespace
 
 using Row = vpSSLClosedLoop::Row;
 
 static int run(int argc, char **argv)
 {
-  Options opt;
-  try {
-    bool help = false;
-    opt = parse(argc, argv, help);
-    if (help) {
-      std::cout << kUsage;
-      return EXIT_SUCCESS;
-    }
-  } catch (const UsageError &e) {
-    std::cerr << "tutorial-ssl-servo: " << e.what() << std::endl;
-    return 2;
+  // A bad option throws UsageError: guardedMain() prints it on one line and returns 2.
+  bool help = false;
+  const Options opt = parse(argc, argv, help);
+  if (help) {
+    std::cout << kUsage;
+    return EXIT_SUCCESS;
   }
   vpSSLClosedLoop::Method method = vpSSLClosedLoop::Method::Ssl;
   vpSSLClosedLoop::parseMethod(opt.method, method); // checked by parse()
@@ -281,8 +263,8 @@ static int run(int argc, char **argv)
                 opt.scenario.c_str(), opt.method.c_str(), rows.empty() ? 0. : rows.back().t, elapsed,
                 1000. * elapsed / std::max<size_t>(1, rows.size()), opt.width, opt.height,
                 opt.supersampling * opt.supersampling, vpSSLHomingBehaviour::getStateName(homing.getState()).c_str(),
-                n ? num(rms, 3).c_str() : "n/a", n, std::isfinite(dockTime) ? num(dockTime, 1).c_str() : "n/a",
-                base.c_str());
+                n ? vpSSLBenchMath::csvNumber(rms, 3).c_str() : "n/a", n,
+                std::isfinite(dockTime) ? vpSSLBenchMath::csvNumber(dockTime, 1).c_str() : "n/a", base.c_str());
   } catch (const vpException &e) {
     std::cerr << "tutorial-ssl-servo: " << e.getStringMessage() << std::endl;
     return EXIT_FAILURE;

@@ -81,6 +81,13 @@ DISPLAY= expect 0 "no X display \(DISPLAY unset\): writing annotated images inst
 expect 2 "option --window: expected an integer in \[2, 128\], got \"2.5\"" "$det" --input "$img" --window 2.5
 expect 2 "option --window: expected an integer in \[2, 128\], got \"4294967298\"" "$det" --input "$img" --window 4294967298
 expect 2 "option --threads: expected an integer in \[0, 256\], got \"-1\"" "$det" --input "$img" --threads -1
+# Thread counts: never negative (read as a huge unsigned count it would start billions of threads), zero only where
+# the tutorial's --help documents it as "all cores".
+expect 2 "--nthreads: expected an integer in \[0, 256\], got \"-1\"" "$T/tutorial-ssl-detector-pose" --nthreads -1
+for t in -1 0; do
+  expect 2 "--threads: expected an integer in \[1, 256\], got \"$t\"" "$T/tutorial-ssl-detector-recall" --threads "$t"
+  expect 2 "--threads: expected an integer in \[1, 64\], got \"$t\"" "$T/tutorial-ssl-servo-monte-carlo" --threads "$t"
+done
 expect 2 "--seed: expected an integer" "$sim" --output s --seed 1e15 --frames 1
 expect 2 "option --seed: expected an integer" "$trk" --sequence "$D/sequences/approach-clear" --seed 1e15
 # 16. Annotated images that could not be written are not claimed written.

@@ -34,6 +34,11 @@ std::string vpSSLBenchMath::fmt(double x, int digits)
   return buf;
 }
 
+std::string vpSSLBenchMath::csvNumber(double x, int digits)
+{
+  return std::isfinite(x) ? fmt(x, digits) : std::string();
+}
+
 const std::vector<double> &vpSSLBenchMath::bandEdges()
 {
   static const std::vector<double> edges = {0., 1., 2., 4., 8., 12.};

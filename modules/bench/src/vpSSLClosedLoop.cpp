@@ -132,7 +132,7 @@ void vpSSLClosedLoop::writeRows(const std::string &path, const std::vector<Row> 
   if (!csv) {
     throw vpException(vpException::ioError, "%s: cannot write", path.c_str());
   }
-  auto num = [](double x, int digits) { return std::isfinite(x) ? vpSSLBenchMath::fmt(x, digits) : std::string(); };
+  auto num = [](double x, int digits) { return vpSSLBenchMath::csvNumber(x, digits); };
   csv << "t,state,nb_points,est_range,true_range,yaw_rate_demand,yaw_rate,heading_deg,depth,lateral,target_y,"
          "collision,y_rel_est,y_rel_true\n";
   for (const Row &r : rows) {

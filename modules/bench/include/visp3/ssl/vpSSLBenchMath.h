@@ -37,6 +37,9 @@ public:
   //! \e x with \e digits decimals for the Markdown tables, "-" when it was not measured (NaN).
   static std::string fmt(double x, int digits);
 
+  //! \e x with \e digits decimals for a CSV cell, "" when it was not measured (NaN).
+  static std::string csvNumber(double x, int digits);
+
   //! The range bands of the report (m): [0,1), [1,2), [2,4), [4,8), [8,12].
   static const std::vector<double> &bandEdges();
 
