@@ -12,7 +12,8 @@
 #   e2e_finish     the script's last line: exit 1 if a check failed, else 0
 #   expect_error CODE PATTERN ARGS...
 #                  runs BIN ARGS and checks a bad input's contract: exit status CODE, exactly one line on stderr,
-#                  matching the grep pattern PATTERN (stdout in ./out, stderr in ./err)
+#                  matching the grep pattern PATTERN (stdout in ./expect_error.out, stderr in
+#                  ./expect_error.err)
 set -u
 
 if [ $# -lt 3 ]; then
@@ -38,11 +39,11 @@ pass() { echo "ok: $*"; }
 expect_error() {
   local code=$1 pattern=$2
   shift 2
-  "$BIN" "$@" > out 2> err
+  "$BIN" "$@" > expect_error.out 2> expect_error.err
   local rc=$?
   [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
-  [ "$(wc -l < err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat err)"
-  grep -q -- "$pattern" err || fail "$* : stderr does not mention '$pattern': $(cat err)"
+  [ "$(wc -l < expect_error.err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat expect_error.err)"
+  grep -q -- "$pattern" expect_error.err || fail "$* : stderr does not mention '$pattern': $(cat expect_error.err)"
 }
 e2e_finish() {
   if [ "$FAILS" -ne 0 ]; then

@@ -11,22 +11,14 @@ for opt in --stand-off --start --iterations --error --small --seed --display --o
   grep -q -- "$opt" help || fail "--help does not mention $opt"
 done
 
-check_error() { # pattern args...
-  local pattern=$1; shift
-  "$BIN" "$@" > out 2> err
-  local rc=$?
-  [ $rc -eq 2 ] || fail "$* : exit code $rc, expected 2"
-  [ "$(wc -l < err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat err)"
-  grep -q -- "$pattern" err || fail "$* : stderr does not mention $pattern: $(cat err)"
-}
-check_error "unknown option" --bogus
-check_error "--stand-off" --stand-off 0.1
-check_error "--start" --start 1,2,3
-check_error "--start" --start 0,0,-1,0,0,0
-check_error "--start" --start 0,0,1,0,0,x
-check_error "--iterations" --iterations 0
-check_error "--error" --error 0
-check_error "needs a value" --output-dir
+expect_error 2 "unknown option" --bogus
+expect_error 2 "--stand-off" --stand-off 0.1
+expect_error 2 "--start" --start 1,2,3
+expect_error 2 "--start" --start 0,0,-1,0,0,0
+expect_error 2 "--start" --start 0,0,1,0,0,x
+expect_error 2 "--iterations" --iterations 0
+expect_error 2 "--error" --error 0
+expect_error 2 "needs a value" --output-dir
 
 "$BIN" --small --iterations 300 > log 2> err
 rc=$?

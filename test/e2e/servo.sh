@@ -11,21 +11,13 @@ for opt in --scenario --method --duration --seed --output-dir --width --height -
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
-check_error() { # pattern args...
-  local pattern=$1; shift
-  "$BIN" "$@" > "$WORK/out" 2> "$WORK/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "$* : exit code $rc, expected 2"
-  [ "$(wc -l < "$WORK/err")" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat "$WORK/err")"
-  grep -q -- "$pattern" "$WORK/err" || fail "$* : stderr does not mention $pattern: $(cat "$WORK/err")"
-}
-check_error "unknown option" --bogus
-check_error "--scenario" --scenario fig10
-check_error "--method" --method sift
-check_error "--duration" --duration -3
-check_error "--duration" --duration abc
-check_error "needs a value" --seed
-check_error "--supersampling" --supersampling 0
+expect_error 2 "unknown option" --bogus
+expect_error 2 "--scenario" --scenario fig10
+expect_error 2 "--method" --method sift
+expect_error 2 "--duration" --duration -3
+expect_error 2 "--duration" --duration abc
+expect_error 2 "needs a value" --seed
+expect_error 2 "--supersampling" --supersampling 0
 
 for method in ssl apriltag; do
   "$BIN" --scenario fig9 --small --duration 20 --method $method --quiet --output-dir "$WORK/out-$method" \

@@ -14,23 +14,15 @@ for opt in --runs --seed --methods --time-limit --max-current --threads --traces
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
-check_error() { # pattern args...
-  local pattern=$1; shift
-  "$BIN" "$@" > "$WORK/out" 2> "$WORK/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "$* : exit code $rc, expected 2"
-  [ "$(wc -l < "$WORK/err")" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat "$WORK/err")"
-  grep -q -- "$pattern" "$WORK/err" || fail "$* : stderr does not mention $pattern: $(cat "$WORK/err")"
-}
-check_error "unknown option" --bogus
-check_error "--runs" --runs 0
-check_error "--methods" --methods ssl,sift
-check_error "--time-limit" --time-limit -1
-check_error "needs a value" --seed
-check_error "--start-range" --start-range 3,2
-check_error "--start-range" --start-range 2
-check_error "--start-heading" --start-heading 181
-check_error "--water" --water turbid
+expect_error 2 "unknown option" --bogus
+expect_error 2 "--runs" --runs 0
+expect_error 2 "--methods" --methods ssl,sift
+expect_error 2 "--time-limit" --time-limit -1
+expect_error 2 "needs a value" --seed
+expect_error 2 "--start-range" --start-range 3,2
+expect_error 2 "--start-range" --start-range 2
+expect_error 2 "--start-heading" --start-heading 181
+expect_error 2 "--water" --water turbid
 
 # A perfect sensor needs no image: 2 runs of 30 s simulated take well under a second.
 for threads in 1 2; do

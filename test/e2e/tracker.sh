@@ -12,21 +12,13 @@ for opt in --sequence --csv --output-dir --display --no-odometry --small-landmar
 done
 
 # Bad options: exit 2 and one line on stderr naming the problem.
-check_error() { # expected_code pattern args...
-  local code=$1 pattern=$2; shift 2
-  "$BIN" "$@" > "$WORK/out" 2> "$WORK/err"
-  local rc=$?
-  [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
-  [ "$(wc -l < "$WORK/err")" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat "$WORK/err")"
-  grep -q -- "$pattern" "$WORK/err" || fail "$* : stderr does not mention $pattern: $(cat "$WORK/err")"
-}
-check_error 2 "--sequence is required"
-check_error 2 "unknown option" --sequence "$DATA/sequences/approach-clear" --bogus
-check_error 2 "needs a value" --sequence
-check_error 2 "--small-landmarks" --sequence "$DATA/sequences/approach-clear" --small-landmarks sometimes
-check_error 2 "--particles" --sequence "$DATA/sequences/approach-clear" --particles -3
-check_error 2 "--max-frames" --sequence "$DATA/sequences/approach-clear" --max-frames abc
-check_error 1 "no-such-sequence" --sequence "$WORK/no-such-sequence"
+expect_error 2 "--sequence is required"
+expect_error 2 "unknown option" --sequence "$DATA/sequences/approach-clear" --bogus
+expect_error 2 "needs a value" --sequence
+expect_error 2 "--small-landmarks" --sequence "$DATA/sequences/approach-clear" --small-landmarks sometimes
+expect_error 2 "--particles" --sequence "$DATA/sequences/approach-clear" --particles -3
+expect_error 2 "--max-frames" --sequence "$DATA/sequences/approach-clear" --max-frames abc
+expect_error 1 "no-such-sequence" --sequence "$WORK/no-such-sequence"
 
 # A run on approach-clear: one CSV row per frame, the documented columns, annotated images, the summary.
 "$BIN" --sequence "$DATA/sequences/approach-clear" --csv "$WORK/track.csv" --output-dir "$WORK/annotated" \
