@@ -20,34 +20,15 @@
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
+#include "ssl_test_sequences.h"
 #include "ssl_test_utils.h"
 
 namespace {
-struct Sequence
-{
-  vpCameraParameters cam;
-  vpHomogeneousMatrix vMc;
-  vpSSLTarget target;
-  std::vector<vpSSLSequenceFrame> frames;
-  std::vector<vpImage<unsigned char>> images;
-};
+using sslt::Sequence;
 
 const Sequence &approachClear()
 {
-  static Sequence s;
-  if (s.frames.empty()) {
-    vpSSLSequenceReader reader;
-    reader.open(std::string(VISP_SSL_DATA_DIR) + "/sequences/approach-clear");
-    s.cam = reader.getCameraParameters();
-    s.vMc = vpHomogeneousMatrix(reader.getInfo().vMc);
-    s.target = vpSSLTarget::fromName(reader.getInfo().target);
-    vpSSLSequenceFrame f;
-    vpImage<unsigned char> I;
-    while (reader.next(f, I)) {
-      s.frames.push_back(f);
-      s.images.push_back(I);
-    }
-  }
+  static const Sequence s = sslt::readSequence("approach-clear");
   return s;
 }
 

@@ -17,36 +17,14 @@
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
+#include "ssl_test_sequences.h"
 #include "ssl_test_utils.h"
 
 namespace {
 const vpCameraParameters kCam(554.3, 554.3, 320., 240.);
 
-struct Sequence
-{
-  vpCameraParameters cam;
-  vpHomogeneousMatrix vMc;
-  vpSSLTarget target;
-  std::vector<vpSSLSequenceFrame> frames;
-  std::vector<vpImage<unsigned char>> images;
-};
-
-Sequence readSequence(const std::string &name)
-{
-  Sequence s;
-  vpSSLSequenceReader reader;
-  reader.open(std::string(VISP_SSL_DATA_DIR) + "/sequences/" + name);
-  s.cam = reader.getCameraParameters();
-  s.vMc = vpHomogeneousMatrix(reader.getInfo().vMc);
-  s.target = vpSSLTarget::fromName(reader.getInfo().target);
-  vpSSLSequenceFrame f;
-  vpImage<unsigned char> I;
-  while (reader.next(f, I)) {
-    s.frames.push_back(f);
-    s.images.push_back(I);
-  }
-  return s;
-}
+using sslt::readSequence;
+using sslt::Sequence;
 
 double positionError(const vpHomogeneousMatrix &cMo, const vpHomogeneousMatrix &truth)
 {
