@@ -7,6 +7,7 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRzyxVector.h>
 #include <visp3/ssl/vpSSLAuvSimulator.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
 #include "ssl_test_utils.h"
@@ -119,7 +120,7 @@ TEST(AuvSimulator, ThrustNeverExceedsTheLimits)
     for (unsigned int k = 0; k < 6; ++k) {
       ASSERT_LE(std::fabs(auv.getThrust()[k]), p.thrustLimit[k] * (1. + 1e-12)) << "axis " << k;
     }
-    ASSERT_TRUE(sslt::isFinite(auv.get_wMv()));
+    ASSERT_TRUE(vpSSLFinite::isFinite(auv.get_wMv()));
   }
 }
 

@@ -17,6 +17,7 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRxyzVector.h>
 #include <visp3/core/vpThetaUVector.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLParticleFilter.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
@@ -147,7 +148,7 @@ TrackStats track(const ApproachRun &run, double odoNoiseT, double odoNoiseR, lon
     EXPECT_TRUE(pf.predict(odo, run.cMv));
     pf.update(observe(target, run.cMo[k], 0.5, g));
     const vpHomogeneousMatrix est = pf.getMeanPose();
-    st.allFinite = st.allFinite && sslt::isFinite(est);
+    st.allFinite = st.allFinite && vpSSLFinite::isFinite(est);
     st.finalPosErr = positionError(est, run.cMo[k]);
     st.finalAngErr = angleErrorDeg(est, run.cMo[k]);
     if (k >= 10) {
@@ -312,9 +313,9 @@ TEST(ParticleFilter, BadOdometryDoesNotCorrupt)
       expected = false;
     }
     EXPECT_EQ(pf.predict(odo, run.cMv), expected) << "frame " << k;
-    ASSERT_TRUE(sslt::isFinite(pf.getMeanPose())) << "frame " << k;
+    ASSERT_TRUE(vpSSLFinite::isFinite(pf.getMeanPose())) << "frame " << k;
     pf.update(observe(target, run.cMo[k], 0.5, g));
-    ASSERT_TRUE(sslt::isFinite(pf.getMeanPose())) << "frame " << k;
+    ASSERT_TRUE(vpSSLFinite::isFinite(pf.getMeanPose())) << "frame " << k;
     if (k >= 10) {
       // A rejected step loses the motion of one frame (up to 4 cm and 1 deg here, i.e. 5 cm sideways at
       // 3 m): the particles spread and the weakly observed range drifts (max 48 to 144 mm, final 7 to
@@ -349,7 +350,7 @@ TEST(ParticleFilter, HopelessObservationGivesNoNaN)
   outlier.v = -4000;
   outlier.radius = 3;
   EXPECT_EQ(pf.update({outlier}), vpSSLParticleFilter::HOPELESS_KEPT);
-  EXPECT_TRUE(sslt::isFinite(pf.getMeanPose()));
+  EXPECT_TRUE(vpSSLFinite::isFinite(pf.getMeanPose()));
   EXPECT_LT(positionError(pf.getMeanPose(), before), 1e-12);
   EXPECT_TRUE(std::isfinite(pf.getEffectiveSampleSize()));
 
@@ -357,7 +358,7 @@ TEST(ParticleFilter, HopelessObservationGivesNoNaN)
   std::vector<vpSSLObservation> off = observe(target, cMo, 0., g);
   off[0].u += 100;
   EXPECT_EQ(pf.update(off), vpSSLParticleFilter::UPDATED);
-  EXPECT_TRUE(sslt::isFinite(pf.getMeanPose()));
+  EXPECT_TRUE(vpSSLFinite::isFinite(pf.getMeanPose()));
   for (unsigned int i = 0; i < pf.getNbParticles(); ++i) {
     ASSERT_TRUE(std::isfinite(pf.getParticleWeight(i)));
   }

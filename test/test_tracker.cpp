@@ -14,6 +14,7 @@
 
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLScenario.h>
@@ -130,7 +131,7 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
     }
     double trackerError = std::numeric_limits<double>::quiet_NaN();
     if (tracker.hasPose() && f.hasGroundTruth) {
-      ASSERT_TRUE(sslt::isFinite(tracker.getPose()));
+      ASSERT_TRUE(vpSSLFinite::isFinite(tracker.getPose()));
       trackerError = positionError(tracker.getPose(), f.cMo);
       if (state == SSL_TRACKER_TRACKING)
         trackerErrors.push_back(trackerError);
@@ -200,7 +201,7 @@ TEST(Tracker, StateMachineFollowsTheTarget)
   const vpHomogeneousMatrix oMv(s.frames[i].oMv);
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
   EXPECT_EQ(tracker.getNbLandmarks(), 0u);
-  EXPECT_TRUE(sslt::isFinite(tracker.getPose()));
+  EXPECT_TRUE(vpSSLFinite::isFinite(tracker.getPose()));
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
   EXPECT_TRUE(tracker.getLastSearchWasFull()); // lost: the whole image is searched
   EXPECT_EQ(tracker.track(blank, oMv), SSL_TRACKER_LOST);
@@ -210,7 +211,7 @@ TEST(Tracker, StateMachineFollowsTheTarget)
 
   // The target back: acquired again from a whole-image search.
   EXPECT_EQ(tracker.track(s.images[i], oMv), SSL_TRACKER_ACQUIRED);
-  EXPECT_TRUE(sslt::isFinite(tracker.getPose()));
+  EXPECT_TRUE(vpSSLFinite::isFinite(tracker.getPose()));
   EXPECT_LT(positionError(tracker.getPose(), s.frames[i].cMo), 0.2);
 }
 
@@ -233,7 +234,7 @@ double trackWithOdometry(const Sequence &s, bool corrupt, unsigned int &rejected
     if (tracker.hasPose() && !tracker.getLastOdometryUsed())
       ++rejected;
     if (tracker.hasPose()) {
-      EXPECT_TRUE(sslt::isFinite(tracker.getPose())) << "frame " << i;
+      EXPECT_TRUE(vpSSLFinite::isFinite(tracker.getPose())) << "frame " << i;
       for (const vpFeaturePoint &p : tracker.getFeaturePoints())
         EXPECT_TRUE(std::isfinite(p.get_x()) && std::isfinite(p.get_y()) && std::isfinite(p.get_Z()));
     }

@@ -15,6 +15,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpPoseVector.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
@@ -180,8 +181,8 @@ TEST(TrackerProperty, NoInputSequenceGivesANaNPoseOrAnUndocumentedTransition)
         EXPECT_FALSE(tracker.hasPose()) << "seed " << seed << " step " << step;
       }
       if (tracker.hasPose()) {
-        ASSERT_TRUE(sslt::isFinite(tracker.getPose())) << "seed " << seed << " step " << step << "\n"
-                                                       << tracker.getPose();
+        ASSERT_TRUE(vpSSLFinite::isFinite(tracker.getPose())) << "seed " << seed << " step " << step << "\n"
+                                                              << tracker.getPose();
       }
       EXPECT_LE(tracker.getNbLandmarks(), 3u);
       for (const vpRect &r : tracker.getRegionsOfInterest()) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <visp3/core/vpImage.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
@@ -135,7 +136,7 @@ TEST(TrackerSequence, LeaveReturnIsReacquiredWithoutStaleState)
     std::printf("frame %zu truth %d state %d nbPoints %u\n", i, f.hasGroundTruth ? 1 : 0, static_cast<int>(state),
                 tracker.getNbLandmarks());
     if (tracker.hasPose()) {
-      EXPECT_TRUE(sslt::isFinite(tracker.getPose())) << "frame " << i;
+      EXPECT_TRUE(vpSSLFinite::isFinite(tracker.getPose())) << "frame " << i;
       for (const vpFeaturePoint &p : tracker.getFeaturePoints()) {
         EXPECT_TRUE(std::isfinite(p.get_x()) && std::isfinite(p.get_y()) && std::isfinite(p.get_Z()));
         EXPECT_GT(p.get_Z(), 0.);

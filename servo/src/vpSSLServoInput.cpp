@@ -7,28 +7,11 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/core/vpRotationMatrix.h>
+#include <visp3/ssl/vpSSLFinite.h>
+#include <visp3/ssl/vpSSLPointTransform.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
 namespace {
-bool finiteMatrix(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i) {
-    for (unsigned int j = 0; j < 4; ++j) {
-      if (!std::isfinite(M[i][j])) {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-// Camera coordinates of the object point (X, Y, Z) at cMo.
-void toCamera(const vpHomogeneousMatrix &cMo, double X, double Y, double Z, double c[3])
-{
-  for (unsigned int i = 0; i < 3; ++i) {
-    c[i] = cMo[i][0] * X + cMo[i][1] * Y + cMo[i][2] * Z + cMo[i][3];
-  }
-}
 } // namespace
 
 vpPoint vpSSLServoPoint::getObjectPoint() const
@@ -83,7 +66,7 @@ vpSSLServoInput vpSSLServoInput::fromAprilTag(const std::vector<vpImagePoint> &c
                                               bool zAlignedWithCameraAxis)
 {
   vpSSLServoInput in;
-  if (corners.size() != 4 || !(tagSize > 0.) || !std::isfinite(tagSize) || !finiteMatrix(cMo)) {
+  if (corners.size() != 4 || !(tagSize > 0.) || !std::isfinite(tagSize) || !vpSSLFinite::isFinite(cMo)) {
     return in;
   }
   for (const vpImagePoint &ip : corners) {
@@ -114,7 +97,7 @@ vpSSLServoInput vpSSLServoInput::fromAprilTag(const std::vector<vpImagePoint> &c
   double xp[4], yp[4], Zp[4];
   for (unsigned int k = 0; k < 4; ++k) {
     double c[3];
-    toCamera(cMs, object[k][0], object[k][1], 0., c);
+    vpSSLPointTransform::apply(cMs, object[k][0], object[k][1], 0., c);
     Zp[k] = c[2];
     if (!(c[2] > 0.)) {
       return in; // the pose puts the tag behind the camera: not a usable detection
@@ -166,7 +149,7 @@ vpSSLServoInput vpSSLServoInput::fromPose(const std::vector<vpPoint> &objectPoin
     p.oY = objectPoints[i].get_oY();
     p.oZ = objectPoints[i].get_oZ();
     double c[3];
-    toCamera(cMo, p.oX, p.oY, p.oZ, c);
+    vpSSLPointTransform::apply(cMo, p.oX, p.oY, p.oZ, c);
     p.Z = c[2];
     // A point behind the camera keeps its negative depth: the law reports it instead of servoing on it.
     p.x = c[2] != 0. ? c[0] / c[2] : std::numeric_limits<double>::quiet_NaN();

@@ -8,6 +8,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRotationMatrix.h>
+#include <visp3/ssl/vpSSLFinite.h>
+#include <visp3/ssl/vpSSLPointTransform.h>
 
 namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -15,28 +17,6 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 // squaring such values in the interaction matrix could overflow before any check on the output.
 const double kMaxImageCoordinate = 1e3;
 const double kMaxDistance = 1e6;
-
-bool finiteMatrix(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i) {
-    for (unsigned int j = 0; j < 4; ++j) {
-      if (!std::isfinite(M[i][j])) {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-bool finiteVector(const vpColVector &v)
-{
-  for (unsigned int i = 0; i < v.size(); ++i) {
-    if (!std::isfinite(v[i])) {
-      return false;
-    }
-  }
-  return true;
-}
 
 void checkAxis(vpSSLVehicleAxis axis)
 {
@@ -65,11 +45,11 @@ void targetCentre(const vpSSLServoInput &input, double &x, double &y, double &de
 {
   double X, Y, Z;
   objectCentroid(input, X, Y, Z);
-  if (input.hasPose && finiteMatrix(input.cMo)) {
+  if (input.hasPose && vpSSLFinite::isFinite(input.cMo)) {
     const vpHomogeneousMatrix &M = input.cMo;
-    const double cx = M[0][0] * X + M[0][1] * Y + M[0][2] * Z + M[0][3];
-    const double cy = M[1][0] * X + M[1][1] * Y + M[1][2] * Z + M[1][3];
-    const double cz = M[2][0] * X + M[2][1] * Y + M[2][2] * Z + M[2][3];
+    double c[3];
+    vpSSLPointTransform::apply(M, X, Y, Z, c);
+    const double cx = c[0], cy = c[1], cz = c[2];
     // A pose that disagrees with the points so much that the centre is behind the camera or off to infinity
     // is not trusted: the points' mean is used instead.
     if (cz > 0. && cz <= kMaxDistance && std::fabs(cx / cz) <= kMaxImageCoordinate &&
@@ -161,7 +141,7 @@ void vpSSLServoLaw::setMinPointStandOff(double Zmin)
 
 void vpSSLServoLaw::setCameraToVehicle(const vpHomogeneousMatrix &vMc)
 {
-  if (!finiteMatrix(vMc)) {
+  if (!vpSSLFinite::isFinite(vMc)) {
     throw vpException(vpException::badValue, "vpSSLServoLaw::setCameraToVehicle: vMc: not finite");
   }
   m_vMc = vMc;
@@ -450,9 +430,9 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
       for (size_t i = 0; i < n; ++i) {
         const vpSSLServoPoint &p = input.points[i];
         m_s[i].buildFrom(p.x, p.y, std::max(p.Z, m_minDepth));
-        const double X = cdMo[0][0] * p.oX + cdMo[0][1] * p.oY + cdMo[0][2] * p.oZ + cdMo[0][3];
-        const double Y = cdMo[1][0] * p.oX + cdMo[1][1] * p.oY + cdMo[1][2] * p.oZ + cdMo[1][3];
-        const double Z = std::max(cdMo[2][0] * p.oX + cdMo[2][1] * p.oY + cdMo[2][2] * p.oZ + cdMo[2][3], m_minDepth);
+        double c[3];
+        vpSSLPointTransform::apply(cdMo, p.oX, p.oY, p.oZ, c);
+        const double X = c[0], Y = c[1], Z = std::max(c[2], m_minDepth);
         m_sd[i].buildFrom(X / Z, Y / Z, Z);
         task.addFeature(m_s[i], m_sd[i]);
         pointError += vpMath::sqr(p.x - X / Z) + vpMath::sqr(p.y - Y / Z);
@@ -471,7 +451,7 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
     fail(SSL_SERVO_NUMERICAL_FAILURE);
     return m_velocity;
   }
-  if (qdot.size() != axes.size() || !finiteVector(qdot)) {
+  if (qdot.size() != axes.size() || !vpSSLFinite::isFinite(qdot)) {
     fail(SSL_SERVO_NUMERICAL_FAILURE);
     return m_velocity;
   }
@@ -490,7 +470,7 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
     v /= scale;
   }
   const vpColVector vc = vpVelocityTwistMatrix(cMv) * v;
-  if (!finiteVector(v) || !finiteVector(vc)) {
+  if (!vpSSLFinite::isFinite(v) || !vpSSLFinite::isFinite(vc)) {
     fail(SSL_SERVO_NUMERICAL_FAILURE);
     return m_velocity;
   }

@@ -232,15 +232,6 @@ vpCameraParameters cameraWithDistortion(double px, double py, double u0, double 
   return cam;
 }
 
-bool isFinite(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i)
-    for (unsigned int j = 0; j < 4; ++j)
-      if (!std::isfinite(M[i][j]))
-        return false;
-  return true;
-}
-
 double median(std::vector<double> v)
 {
   if (v.empty())

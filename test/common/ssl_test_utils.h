@@ -53,9 +53,6 @@ void occlude(vpImage<unsigned char> &I, const vpRect &rect, unsigned char value)
 void mirrorHorizontal(vpImage<unsigned char> &I);
 
 //! Pixel of the target-frame point (X, Y, Z) at pose cMo, distortion included (kud); NaN if Z <= 0 in the camera.
-//! True when every element of \e M is a finite number (no NaN, no infinity).
-bool isFinite(const vpHomogeneousMatrix &M);
-
 vpImagePoint projectPoint(const vpCameraParameters &cam, const vpHomogeneousMatrix &cMo, double X, double Y,
                           double Z = 0.);
 

@@ -12,6 +12,7 @@
 #include <visp3/core/vpExponentialMap.h>
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/core/vpVelocityTwistMatrix.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
 namespace {
@@ -20,14 +21,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool isFiniteRigid(const vpHomogeneousMatrix &M)
 {
-  for (unsigned int i = 0; i < 4; ++i) {
-    for (unsigned int j = 0; j < 4; ++j) {
-      if (!std::isfinite(M[i][j])) {
-        return false;
-      }
-    }
-  }
-  return M.isAnHomogeneousMatrix(1e-6);
+  return vpSSLFinite::isFinite(M) && M.isAnHomogeneousMatrix(1e-6);
 }
 
 void checkPositive(double v, const char *what)

@@ -6,6 +6,7 @@
 #include <visp3/core/vpException.h>
 
 #include "vpSSLImageCheck.h"
+#include "vpSSLMatchingKernel.h"
 
 namespace {
 const int kDu[4] = {1, -1, 0, 0};
@@ -61,7 +62,7 @@ bool vpSSLMatchingFunction::evaluate(const vpImage<unsigned char> &I, int u, int
     const int i0 = I[v + dv * static_cast<int>(xi)][u + du * static_cast<int>(xi)];
     const int ia = I[v + dv * a][u + du * a];
     const int ib = I[v + dv * b][u + du * b];
-    sum += std::abs(i0 - ia) - std::abs(i0 - ib);
+    sum += vpSSLMatchingKernel::term(i0, ia, ib);
   }
   value = sum;
   return true;
@@ -90,7 +91,7 @@ void vpSSLMatchingFunction::cumulative(const vpImage<unsigned char> &I, int u, i
     const int i0 = I[ve][ue];
     const int ia = I[v + dv * a][u + du * a];
     const int ib = I[v + dv * b][u + du * b];
-    sum += std::abs(i0 - ia) - std::abs(i0 - ib);
+    sum += vpSSLMatchingKernel::term(i0, ia, ib);
     S.push_back(sum);
   }
 }

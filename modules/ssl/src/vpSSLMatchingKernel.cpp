@@ -56,7 +56,7 @@ void MatchSpanImpl(const Params &P, int v, int u0, int u1)
       int sum = 0;
       for (int xi = 1; xi <= w; ++xi) {
         const std::ptrdiff_t *o = P.offsets[dir][xi];
-        sum += std::abs(p[o[0]] - p[o[1]]) - std::abs(p[o[0]] - p[o[2]]);
+        sum += term(p[o[0]], p[o[1]], p[o[2]]);
       }
       best = any ? std::max(best, sum) : sum;
       any = true;

@@ -12,10 +12,21 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 
 namespace vpSSLMatchingKernel {
 //! Largest window the kernel accepts; 255 * 128 = 32640 keeps every sum inside int16.
 constexpr int kMaxWindow = 128;
+
+/*!
+  One term of the Eq. 3 sum from its three pixels: |I(X + xi d) - I(X + a_xi d)| - |I(X + xi d) - I(X + b_xi d)|.
+  The scalar sums (reference, single pixel, cumulative, the kernel's one-lane fallback) all add these; the
+  vector kernels compute the same integers lane-wise.
+*/
+inline int term(int i0, int ia, int ib)
+{
+  return std::abs(i0 - ia) - std::abs(i0 - ib);
+}
 
 //! Directions, in the order of vpSSLDirection.
 enum Direction

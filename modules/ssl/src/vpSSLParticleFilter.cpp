@@ -9,241 +9,86 @@
 #include <limits>
 #include <sstream>
 
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpMath.h>
+#include <visp3/ssl/vpSSLFinite.h>
 
 namespace {
-// Quaternions here are (w, x, y, z); rotation matrices row-major double[9].
-void qMul(const double a[4], const double b[4], double out[4])
+// Particle::q holds Eigen's coefficient order (x, y, z, w), so that it maps onto an Eigen::Quaterniond in place.
+using Quat = Eigen::Map<Eigen::Quaterniond>;
+using ConstQuat = Eigen::Map<const Eigen::Quaterniond>;
+using Vec3 = Eigen::Map<Eigen::Vector3d>;
+using ConstVec3 = Eigen::Map<const Eigen::Vector3d>;
+using RowMajor4d = Eigen::Matrix<double, 4, 4, Eigen::RowMajor>;
+
+// Exponential map of a rotation vector (angle times axis). Eigen::AngleAxisd needs a unit axis, which a zero
+// rotation does not have: sin(a/2)/a tends to 1/2 as a tends to 0.
+Eigen::Quaterniond rotationVectorToQuaternion(const Eigen::Vector3d &r)
 {
-  const double w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
-  const double x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
-  const double y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
-  const double z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
-  out[0] = w;
-  out[1] = x;
-  out[2] = y;
-  out[3] = z;
+  const double a = r.norm();
+  const double s = (a < 1e-12) ? 0.5 : std::sin(0.5 * a) / a;
+  Eigen::Quaterniond q;
+  q.w() = std::cos(0.5 * a);
+  q.vec() = s * r;
+  return q;
 }
 
-void qNormalise(double q[4])
+// Rotation vector of the rotation of angle <= pi that q and -q both stand for.
+Eigen::Vector3d quaternionToRotationVector(const Eigen::Quaterniond &q)
 {
-  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  for (int i = 0; i < 4; ++i) {
-    q[i] /= n;
-  }
+  const Eigen::AngleAxisd aa(q);
+  return aa.angle() * aa.axis();
 }
 
-void qToRot(const double q[4], double R[9])
+// Unit eigenvector of the largest eigenvalue of a symmetric 4x4 matrix, sign chosen so that w >= 0 (the
+// eigenvector's sign is arbitrary; a fixed one keeps the output stable). Fixed size: no allocation.
+Eigen::Quaterniond dominantQuaternion(const Eigen::Matrix4d &M)
 {
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  R[0] = 1 - 2 * (y * y + z * z);
-  R[1] = 2 * (x * y - w * z);
-  R[2] = 2 * (x * z + w * y);
-  R[3] = 2 * (x * y + w * z);
-  R[4] = 1 - 2 * (x * x + z * z);
-  R[5] = 2 * (y * z - w * x);
-  R[6] = 2 * (x * z - w * y);
-  R[7] = 2 * (y * z + w * x);
-  R[8] = 1 - 2 * (x * x + y * y);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> solver(M);
+  Eigen::Vector4d v = solver.eigenvectors().col(3); // eigenvalues in increasing order
+  if (v[3] < 0) {
+    v = -v;
+  }
+  Eigen::Quaterniond q(v); // coefficients (x, y, z, w)
+  q.normalize();
+  return q;
 }
 
-// Shepperd's method: picks the largest of the four squared components to stay well conditioned.
-void rotToQ(const double R[9], double q[4])
+// The 4x4 of a vpHomogeneousMatrix, read in place (its storage is row-major): no allocation.
+Eigen::Map<const RowMajor4d> asEigen(const vpHomogeneousMatrix &M)
 {
-  const double tr = R[0] + R[4] + R[8];
-  if (tr > 0) {
-    const double s = 2 * std::sqrt(tr + 1);
-    q[0] = 0.25 * s;
-    q[1] = (R[7] - R[5]) / s;
-    q[2] = (R[2] - R[6]) / s;
-    q[3] = (R[3] - R[1]) / s;
-  } else if (R[0] > R[4] && R[0] > R[8]) {
-    const double s = 2 * std::sqrt(1 + R[0] - R[4] - R[8]);
-    q[0] = (R[7] - R[5]) / s;
-    q[1] = 0.25 * s;
-    q[2] = (R[1] + R[3]) / s;
-    q[3] = (R[2] + R[6]) / s;
-  } else if (R[4] > R[8]) {
-    const double s = 2 * std::sqrt(1 + R[4] - R[0] - R[8]);
-    q[0] = (R[2] - R[6]) / s;
-    q[1] = (R[1] + R[3]) / s;
-    q[2] = 0.25 * s;
-    q[3] = (R[5] + R[7]) / s;
-  } else {
-    const double s = 2 * std::sqrt(1 + R[8] - R[0] - R[4]);
-    q[0] = (R[3] - R[1]) / s;
-    q[1] = (R[2] + R[6]) / s;
-    q[2] = (R[5] + R[7]) / s;
-    q[3] = 0.25 * s;
-  }
-  qNormalise(q);
-}
-
-void rotVecToQ(const double r[3], double q[4])
-{
-  const double a = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-  q[0] = std::cos(0.5 * a);
-  const double s = (a < 1e-12) ? 0.5 : std::sin(0.5 * a) / a; // sin(a/2)/a -> 1/2 as a -> 0
-  q[1] = s * r[0];
-  q[2] = s * r[1];
-  q[3] = s * r[2];
-}
-
-void qToRotVec(const double qIn[4], double r[3])
-{
-  const double sgn = (qIn[0] < 0) ? -1. : 1.; // q and -q: take the rotation of angle <= pi
-  const double w = sgn * qIn[0];
-  const double n = std::sqrt(qIn[1] * qIn[1] + qIn[2] * qIn[2] + qIn[3] * qIn[3]);
-  const double a = 2 * std::atan2(n, w);
-  const double s = (n < 1e-12) ? 2. : a / n;
-  for (int i = 0; i < 3; ++i) {
-    r[i] = sgn * s * qIn[i + 1];
-  }
-}
-
-// Eigenvector of the largest eigenvalue of a symmetric 4x4 matrix (cyclic Jacobi, allocation free).
-void dominantEigenvector4(const double Min[16], double v[4])
-{
-  double A[16], V[16];
-  for (int i = 0; i < 16; ++i) {
-    A[i] = Min[i];
-    V[i] = (i % 5 == 0) ? 1. : 0.;
-  }
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    double off = 0, diag = 0;
-    for (int p = 0; p < 4; ++p) {
-      diag += A[p * 5] * A[p * 5];
-      for (int q = p + 1; q < 4; ++q) {
-        off += A[p * 4 + q] * A[p * 4 + q];
-      }
-    }
-    if (off <= 1e-30 * (diag + 1e-300)) {
-      break;
-    }
-    for (int p = 0; p < 3; ++p) {
-      for (int q = p + 1; q < 4; ++q) {
-        const double apq = A[p * 4 + q];
-        if (std::fabs(apq) < 1e-300) {
-          continue;
-        }
-        const double theta = (A[q * 5] - A[p * 5]) / (2 * apq);
-        const double t = ((theta >= 0) ? 1. : -1.) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (int k = 0; k < 4; ++k) { // A <- A J
-          const double akp = A[k * 4 + p], akq = A[k * 4 + q];
-          A[k * 4 + p] = c * akp - s * akq;
-          A[k * 4 + q] = s * akp + c * akq;
-        }
-        for (int k = 0; k < 4; ++k) { // A <- J^T A
-          const double apk = A[p * 4 + k], aqk = A[q * 4 + k];
-          A[p * 4 + k] = c * apk - s * aqk;
-          A[q * 4 + k] = s * apk + c * aqk;
-        }
-        for (int k = 0; k < 4; ++k) { // V <- V J
-          const double vkp = V[k * 4 + p], vkq = V[k * 4 + q];
-          V[k * 4 + p] = c * vkp - s * vkq;
-          V[k * 4 + q] = s * vkp + c * vkq;
-        }
-      }
-    }
-  }
-  int best = 0;
-  for (int i = 1; i < 4; ++i) {
-    if (A[i * 5] > A[best * 5]) {
-      best = i;
-    }
-  }
-  for (int k = 0; k < 4; ++k) {
-    v[k] = V[k * 4 + best];
-  }
-  if (v[0] < 0) { // sign is arbitrary; w >= 0 keeps the output stable
-    for (int k = 0; k < 4; ++k) {
-      v[k] = -v[k];
-    }
-  }
-  qNormalise(v);
-}
-
-bool allFinite(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i) {
-    for (unsigned int j = 0; j < 4; ++j) {
-      if (!std::isfinite(M[i][j])) {
-        return false;
-      }
-    }
-  }
-  return true;
+  return Eigen::Map<const RowMajor4d>(M.data);
 }
 
 // A rigid motion: finite, orthonormal rotation with det +1, last row (0 0 0 1).
 bool isRigid(const vpHomogeneousMatrix &M)
 {
-  if (!allFinite(M)) {
+  if (!vpSSLFinite::isFinite(M)) {
     return false;
   }
-  for (unsigned int i = 0; i < 3; ++i) {
-    for (unsigned int j = 0; j < 3; ++j) {
-      double d = 0;
-      for (unsigned int k = 0; k < 3; ++k) {
-        d += M[k][i] * M[k][j];
-      }
-      if (std::fabs(d - (i == j ? 1. : 0.)) > 1e-6) {
-        return false;
-      }
-    }
+  const Eigen::Map<const RowMajor4d> E = asEigen(M);
+  const Eigen::Matrix3d R = E.topLeftCorner<3, 3>();
+  if (((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().array() > 1e-6).any()) {
+    return false;
   }
-  const double det = M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
-                     M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                     M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
-  return det > 0 && std::fabs(M[3][0]) + std::fabs(M[3][1]) + std::fabs(M[3][2]) + std::fabs(M[3][3] - 1) < 1e-9;
+  return R.determinant() > 0 && (E.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().sum() < 1e-9;
 }
 
-// Flat copies: composing vpHomogeneousMatrix objects would allocate at every prediction.
-void toArray(const vpHomogeneousMatrix &M, double R[9], double t[3])
+Eigen::Isometry3d toIsometry(const vpHomogeneousMatrix &M)
 {
-  for (unsigned int i = 0; i < 3; ++i) {
-    for (unsigned int j = 0; j < 3; ++j) {
-      R[i * 3 + j] = M[i][j];
-    }
-    t[i] = M[i][3];
-  }
-}
-
-// (Ra, ta) * (Rb, tb)
-void compose(const double Ra[9], const double ta[3], const double Rb[9], const double tb[3], double R[9], double t[3])
-{
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      R[i * 3 + j] = Ra[i * 3] * Rb[j] + Ra[i * 3 + 1] * Rb[3 + j] + Ra[i * 3 + 2] * Rb[6 + j];
-    }
-    t[i] = Ra[i * 3] * tb[0] + Ra[i * 3 + 1] * tb[1] + Ra[i * 3 + 2] * tb[2] + ta[i];
-  }
-}
-
-void invert(const double R[9], const double t[3], double Ri[9], double ti[3])
-{
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      Ri[i * 3 + j] = R[j * 3 + i];
-    }
-  }
-  for (int i = 0; i < 3; ++i) {
-    ti[i] = -(Ri[i * 3] * t[0] + Ri[i * 3 + 1] * t[1] + Ri[i * 3 + 2] * t[2]);
-  }
+  Eigen::Isometry3d T;
+  T.matrix() = asEigen(M);
+  return T;
 }
 
 void setPose(vpHomogeneousMatrix &M, const double t[3], const double q[4])
 {
-  double R[9];
-  qToRot(q, R);
-  for (unsigned int i = 0; i < 3; ++i) {
-    for (unsigned int j = 0; j < 3; ++j) {
-      M[i][j] = R[i * 3 + j];
-    }
-    M[i][3] = t[i];
-  }
+  Eigen::Map<RowMajor4d> E(M.data);
+  E.topLeftCorner<3, 3>() = ConstQuat(q).toRotationMatrix();
+  E.topRightCorner<3, 1>() = ConstVec3(t);
 }
 
 // A detection with no projectable landmark costs this distance: larger than any image, yet finite.
@@ -362,36 +207,34 @@ void vpSSLParticleFilter::init(const std::vector<vpSSLPoseHypothesis> &hypothese
     }
     const vpSSLPoseHypothesis &h = hypotheses[k];
     Particle &p = m_particles[i];
-    double R[9], t[3];
-    toArray(h.cMo, R, t);
+    const Eigen::Map<const RowMajor4d> cMo = asEigen(h.cMo);
     const double sz = (h.depthSigma > 0) ? h.depthSigma : h.positionSigma;
-    p.t[0] = t[0] + h.positionSigma * m_gauss();
-    p.t[1] = t[1] + h.positionSigma * m_gauss();
-    p.t[2] = t[2] + sz * m_gauss();
+    p.t[0] = cMo(0, 3) + h.positionSigma * m_gauss();
+    p.t[1] = cMo(1, 3) + h.positionSigma * m_gauss();
+    p.t[2] = cMo(2, 3) + sz * m_gauss();
+    Quat q(p.q);
     if (h.orientationKnown) {
-      double q0[4], r[3], dq[4];
-      rotToQ(R, q0);
+      Eigen::Quaterniond q0(Eigen::Matrix3d(cMo.topLeftCorner<3, 3>()));
+      q0.normalize();
+      Eigen::Vector3d r;
       for (int j = 0; j < 3; ++j) {
         r[j] = h.rotationSigma * m_gauss();
       }
-      rotVecToQ(r, dq);
-      qMul(dq, q0, p.q);
+      q = rotationVectorToQuaternion(r) * q0;
     } else {
       // Uniform rotation (Shoemake 1992), then turned to face the camera: the printed side is seen.
       const double u1 = m_uni(), u2 = 2 * M_PI * m_uni(), u3 = 2 * M_PI * m_uni();
       const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-      double q[4] = {b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3)};
-      double Rq[9];
-      qToRot(q, Rq);
+      const Eigen::Quaterniond qu(b * std::cos(u3), a * std::sin(u2), a * std::cos(u2), b * std::sin(u3));
       // Target Z points into the sheet: facing means it points away from the camera (along p.t).
-      if (Rq[2] * p.t[0] + Rq[5] * p.t[1] + Rq[8] * p.t[2] < 0) {
-        const double flip[4] = {0., 1., 0., 0.}; // half turn about the target X axis
-        qMul(q, flip, p.q);
+      if (qu.toRotationMatrix().col(2).dot(ConstVec3(p.t)) < 0) {
+        const Eigen::Quaterniond flip(0., 1., 0., 0.); // half turn about the target X axis
+        q = qu * flip;
       } else {
-        std::copy(q, q + 4, p.q);
+        q = qu;
       }
     }
-    qNormalise(p.q);
+    q.normalize();
   }
   m_initialised = true;
   m_nbResamplings = 0;
@@ -404,14 +247,12 @@ void vpSSLParticleFilter::addProcessNoise(Particle &p)
     p.t[j] += m_transSigma * m_gauss();
   }
   if (m_rotSigma > 0) {
-    double r[3], dq[4], q[4];
+    Eigen::Vector3d r;
     for (int j = 0; j < 3; ++j) {
       r[j] = m_rotSigma * m_gauss();
     }
-    rotVecToQ(r, dq);
-    qMul(dq, p.q, q);
-    qNormalise(q);
-    std::copy(q, q + 4, p.q);
+    Quat q(p.q);
+    q = (rotationVectorToQuaternion(r) * q).normalized();
   }
 }
 
@@ -433,50 +274,43 @@ bool vpSSLParticleFilter::predict(const vpHomogeneousMatrix &v1Mv2, const vpHomo
   }
   bool accepted = isRigid(v1Mv2);
   if (accepted) {
-    double Rv[9], tv[3];
-    toArray(v1Mv2, Rv, tv);
-    const double tn = std::sqrt(tv[0] * tv[0] + tv[1] * tv[1] + tv[2] * tv[2]);
-    const double angle = std::acos(std::max(-1., std::min(1., 0.5 * (Rv[0] + Rv[4] + Rv[8] - 1))));
+    const Eigen::Map<const RowMajor4d> E = asEigen(v1Mv2);
+    const double tn = E.topRightCorner<3, 1>().norm();
+    const double angle = std::acos(std::max(-1., std::min(1., 0.5 * (E.topLeftCorner<3, 3>().trace() - 1))));
     accepted = tn <= m_maxOdoTranslation && angle <= m_maxOdoRotation;
   }
   if (!accepted) {
     // The camera moved by an unknown amount: each particle gets its own random camera displacement, which
     // turns the target position about the camera together with its orientation (not independent noise).
     for (Particle &p : m_particles) {
-      double r[3], dq[4], dR[9], t[3], q[4];
+      Eigen::Vector3d r;
       for (int i = 0; i < 3; ++i) {
         r[i] = m_rejectedRotSigma * m_gauss();
       }
-      rotVecToQ(r, dq);
-      qToRot(dq, dR);
+      const Eigen::Quaterniond dq = rotationVectorToQuaternion(r);
+      const Eigen::Matrix3d dR = dq.toRotationMatrix();
+      Vec3 t(p.t);
+      Eigen::Vector3d moved;
       for (int i = 0; i < 3; ++i) {
-        t[i] = dR[i * 3] * p.t[0] + dR[i * 3 + 1] * p.t[1] + dR[i * 3 + 2] * p.t[2] + m_rejectedTransSigma * m_gauss();
+        moved[i] = dR.row(i).dot(t) + m_rejectedTransSigma * m_gauss();
       }
-      std::copy(t, t + 3, p.t);
-      qMul(dq, p.q, q);
-      qNormalise(q);
-      std::copy(q, q + 4, p.q);
+      t = moved;
+      Quat q(p.q);
+      q = (dq * q).normalized();
     }
     predict();
     return false;
   }
   // Camera displacement c1Mc2 = cMv v1Mv2 vMc; the target moves by its inverse c2Mc1 (paper: Rv^T, -Rv^T t).
-  double Rcv[9], tcv[3], Rvc[9], tvc[3], Rv[9], tv[3], Ra[9], ta[3], R12[9], t12[3], R21[9], t21[3], q21[4];
-  toArray(cMv, Rcv, tcv);
-  invert(Rcv, tcv, Rvc, tvc);
-  toArray(v1Mv2, Rv, tv);
-  compose(Rcv, tcv, Rv, tv, Ra, ta);
-  compose(Ra, ta, Rvc, tvc, R12, t12);
-  invert(R12, t12, R21, t21);
-  rotToQ(R21, q21);
+  const Eigen::Isometry3d cMv_ = toIsometry(cMv);
+  const Eigen::Isometry3d c2Mc1 = (cMv_ * toIsometry(v1Mv2) * cMv_.inverse(Eigen::Isometry)).inverse(Eigen::Isometry);
+  Eigen::Quaterniond q21(c2Mc1.linear());
+  q21.normalize();
   for (Particle &p : m_particles) {
-    double t[3], q[4];
-    for (int i = 0; i < 3; ++i) {
-      t[i] = R21[i * 3] * p.t[0] + R21[i * 3 + 1] * p.t[1] + R21[i * 3 + 2] * p.t[2] + t21[i];
-    }
-    std::copy(t, t + 3, p.t);
-    qMul(q21, p.q, q);
-    std::copy(q, q + 4, p.q);
+    Vec3 t(p.t);
+    t = c2Mc1 * Eigen::Vector3d(t);
+    Quat q(p.q);
+    q = q21 * q;
     addProcessNoise(p);
   }
   updateEstimate();
@@ -486,14 +320,12 @@ bool vpSSLParticleFilter::predict(const vpHomogeneousMatrix &v1Mv2, const vpHomo
 double vpSSLParticleFilter::logLikelihood(const Particle &p, const std::vector<vpSSLObservation> &observations)
 {
   const double px = m_cam.get_px(), py = m_cam.get_py(), u0 = m_cam.get_u0(), v0 = m_cam.get_v0();
-  double R[9];
-  qToRot(p.q, R);
+  const Eigen::Matrix3d R = ConstQuat(p.q).toRotationMatrix();
   const size_t nl = m_landmarks.size() / 4;
   for (size_t j = 0; j < nl; ++j) {
     const double *L = &m_landmarks[4 * j];
-    const double X = R[0] * L[0] + R[1] * L[1] + R[2] * L[2] + p.t[0];
-    const double Y = R[3] * L[0] + R[4] * L[1] + R[5] * L[2] + p.t[1];
-    const double Z = R[6] * L[0] + R[7] * L[1] + R[8] * L[2] + p.t[2];
+    const Eigen::Vector3d c = R * ConstVec3(L) + ConstVec3(p.t);
+    const double X = c[0], Y = c[1], Z = c[2];
     double *P = &m_proj[4 * j];
     P[3] = (Z > 1e-3) ? 1. : 0.; // behind or at the camera: cannot be seen
     if (P[3] > 0) {
@@ -651,7 +483,7 @@ void vpSSLParticleFilter::resample()
   m_particles.swap(m_scratch);
   if (jitter) {
     for (Particle &p : m_particles) {
-      double g[6], e[6] = {0, 0, 0, 0, 0, 0}, dq[4], q[4];
+      double g[6], e[6] = {0, 0, 0, 0, 0, 0};
       for (int i = 0; i < 6; ++i) {
         g[i] = m_gauss();
         for (int k = 0; k <= i; ++k) {
@@ -661,10 +493,8 @@ void vpSSLParticleFilter::resample()
       for (int i = 0; i < 3; ++i) {
         p.t[i] += e[i];
       }
-      rotVecToQ(e + 3, dq);
-      qMul(dq, p.q, q);
-      qNormalise(q);
-      std::copy(q, q + 4, p.q);
+      Quat q(p.q);
+      q = (rotationVectorToQuaternion(ConstVec3(e + 3)) * q).normalized();
     }
   }
   std::fill(m_weights.begin(), m_weights.end(), step);
@@ -676,7 +506,8 @@ void vpSSLParticleFilter::resample()
 void vpSSLParticleFilter::updateEstimate()
 {
   const size_t n = m_particles.size();
-  double t[3] = {0, 0, 0}, M[16] = {0}, sum2 = 0;
+  double t[3] = {0, 0, 0}, sum2 = 0;
+  Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
   size_t best = 0;
   for (size_t i = 0; i < n; ++i) {
     const Particle &p = m_particles[i];
@@ -688,28 +519,23 @@ void vpSSLParticleFilter::updateEstimate()
     for (int a = 0; a < 3; ++a) {
       t[a] += w * p.t[a];
     }
-    for (int a = 0; a < 4; ++a) {
-      for (int b = 0; b < 4; ++b) {
-        M[a * 4 + b] += w * p.q[a] * p.q[b];
-      }
-    }
+    const Eigen::Map<const Eigen::Vector4d> qi(p.q);
+    M.noalias() += w * qi * qi.transpose();
   }
   m_ess = 1. / sum2;
-  double qm[4];
-  dominantEigenvector4(M, qm);
-  setPose(m_meanPose, t, qm);
+  const Eigen::Quaterniond qm = dominantQuaternion(M);
+  setPose(m_meanPose, t, qm.coeffs().data());
   setPose(m_bestPose, m_particles[best].t, m_particles[best].q);
 
-  const double qmInv[4] = {qm[0], -qm[1], -qm[2], -qm[3]};
+  const Eigen::Quaterniond qmInv = qm.conjugate();
   double C[36] = {0};
   for (size_t i = 0; i < n; ++i) {
     const Particle &p = m_particles[i];
-    double e[6], dq[4];
+    double e[6];
     for (int a = 0; a < 3; ++a) {
       e[a] = p.t[a] - t[a];
     }
-    qMul(p.q, qmInv, dq); // R_i R_mean^T, camera frame
-    qToRotVec(dq, e + 3);
+    Vec3(e + 3) = quaternionToRotationVector(ConstQuat(p.q) * qmInv); // R_i R_mean^T, camera frame
     for (int a = 0; a < 6; ++a) {
       for (int b = 0; b < 6; ++b) {
         C[a * 6 + b] += m_weights[i] * e[a] * e[b];
@@ -751,21 +577,16 @@ vpQuaternionVector vpSSLParticleFilter::meanQuaternion(const std::vector<vpQuate
     throw vpException(vpException::dimensionError,
                       "vpSSLParticleFilter::meanQuaternion: need as many weights as quaternions, at least one");
   }
-  double M[16] = {0}, total = 0;
+  Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
+  double total = 0;
   for (size_t i = 0; i < q.size(); ++i) {
-    double v[4] = {q[i].w(), q[i].x(), q[i].y(), q[i].z()};
-    qNormalise(v);
-    for (int a = 0; a < 4; ++a) {
-      for (int b = 0; b < 4; ++b) {
-        M[a * 4 + b] += w[i] * v[a] * v[b];
-      }
-    }
+    const Eigen::Vector4d v = Eigen::Vector4d(q[i].x(), q[i].y(), q[i].z(), q[i].w()).normalized();
+    M.noalias() += w[i] * v * v.transpose();
     total += w[i];
   }
   if (!(total > 0)) {
     throw vpException(vpException::badValue, "vpSSLParticleFilter::meanQuaternion: the weights must sum to > 0");
   }
-  double m[4];
-  dominantEigenvector4(M, m);
-  return vpQuaternionVector(m[1], m[2], m[3], m[0]);
+  const Eigen::Quaterniond m = dominantQuaternion(M);
+  return vpQuaternionVector(m.x(), m.y(), m.z(), m.w());
 }

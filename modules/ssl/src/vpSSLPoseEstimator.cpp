@@ -10,6 +10,7 @@
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/core/vpThetaUVector.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLPointTransform.h>
 #include <visp3/vision/vpPose.h>
 
 namespace {
@@ -50,8 +51,9 @@ double minDepth(const vpSSLTarget &target, const vpHomogeneousMatrix &cMo)
 {
   double zmin = 1e300;
   for (const vpSSLTargetLandmark &t : target.getLandmarks()) {
-    const double z = cMo[2][0] * t.x + cMo[2][1] * t.y + cMo[2][2] * t.z + cMo[2][3];
-    zmin = std::min(zmin, z - t.radius * std::hypot(cMo[2][0], cMo[2][1]));
+    double c[3];
+    vpSSLPointTransform::apply(cMo, t.x, t.y, t.z, c);
+    zmin = std::min(zmin, c[2] - t.radius * std::hypot(cMo[2][0], cMo[2][1]));
   }
   return zmin;
 }
@@ -68,11 +70,12 @@ bool vpSSLPoseEstimator::projectCircle(const vpCameraParameters &cam, const vpHo
                                        double y, double z, double radius, double &a, double &b, double &theta)
 {
   // Plane-to-image homography H = [r1 r2 c] of the circle's plane (normalised coordinates), c its centre.
-  double H[3][3];
+  double H[3][3], c[3];
+  vpSSLPointTransform::apply(cMo, x, y, z, c);
   for (unsigned int i = 0; i < 3; ++i) {
     H[i][0] = cMo[i][0];
     H[i][1] = cMo[i][1];
-    H[i][2] = cMo[i][0] * x + cMo[i][1] * y + cMo[i][2] * z + cMo[i][3];
+    H[i][2] = c[i];
   }
   if (!(H[2][2] - radius * std::hypot(H[2][0], H[2][1]) > 0.)) {
     return false;

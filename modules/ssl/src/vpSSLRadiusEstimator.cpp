@@ -180,7 +180,7 @@ void vpSSLRadiusEstimator::ray(int d, double upTo)
   }
 }
 
-bool vpSSLRadiusEstimator::solidRings(int d, double radius) const
+bool vpSSLRadiusEstimator::solidRings(int d, double radius)
 {
   const std::vector<float> &P = m_profile[d];
   const double q = std::sqrt(m_p);

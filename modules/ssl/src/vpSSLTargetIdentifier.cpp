@@ -9,7 +9,11 @@
 namespace {
 // Affine map of the unit circle onto a landmark's outer ellipse: undoing it rectifies the target plane
 // locally, up to a rotation, a scale and without changing its orientation (its determinant is > 0).
-using Ellipse2x2 = vpSSLTargetIdentifier::Ellipse2x2;
+struct Ellipse2x2 // the map and its inverse
+{
+  double m[2][2];
+  double inv[2][2];
+};
 
 Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
 {
@@ -28,6 +32,21 @@ Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
   return e;
 }
 
+// identify()'s buffers, reused from call to call so that it does not allocate once they have grown.
+struct IdentifyScratch
+{
+  std::vector<Ellipse2x2> maps;
+  std::vector<int> hypDetection; // target-landmark labels, K per hypothesis
+  std::vector<unsigned int> hypCount;
+  std::vector<double> hypResidual;
+};
+
+// One per thread: identify() is const, and const methods of the library are safe to call concurrently.
+IdentifyScratch &identifyScratch()
+{
+  thread_local IdentifyScratch s;
+  return s;
+}
 } // namespace
 
 vpSSLTargetIdentifier::vpSSLTargetIdentifier(const vpSSLTarget &target)
@@ -63,17 +82,17 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
   if (N == 0) {
     return;
   }
-  // Scratch reused from call to call: no allocation once the buffers have grown.
-  std::vector<Ellipse2x2> &maps = m_maps;
+  IdentifyScratch &scratch = identifyScratch();
+  std::vector<Ellipse2x2> &maps = scratch.maps;
   maps.resize(N);
   for (size_t i = 0; i < N; ++i) {
     maps[i] = ellipseMap(landmarks[i]);
   }
   const std::vector<vpSSLTargetLandmark> &model = m_target.getLandmarks();
 
-  std::vector<int> &hypDetection = m_hypDetection; // K labels per hypothesis
-  std::vector<unsigned int> &hypCount = m_hypCount;
-  std::vector<double> &hypResidual = m_hypResidual;
+  std::vector<int> &hypDetection = scratch.hypDetection; // K labels per hypothesis
+  std::vector<unsigned int> &hypCount = scratch.hypCount;
+  std::vector<double> &hypResidual = scratch.hypResidual;
   hypDetection.clear();
   hypCount.clear();
   hypResidual.clear();

@@ -16,18 +16,10 @@
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLSequenceInfo.h>
 
-#include "vpSSLImageCheck.h"
+#include <visp3/ssl/vpSSLFinite.h>
+#include <visp3/ssl/vpSSLPointTransform.h>
 
-namespace {
-bool isFinite(const vpHomogeneousMatrix &M)
-{
-  for (unsigned int i = 0; i < 4; ++i)
-    for (unsigned int j = 0; j < 4; ++j)
-      if (!std::isfinite(M[i][j]))
-        return false;
-  return true;
-}
-} // namespace
+#include "vpSSLImageCheck.h"
 
 vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &cam, const vpHomogeneousMatrix &vMc)
     : m_target(target), m_cam(cam), m_cMv(), m_detector(target), m_estimator(target), m_filter(target, cam),
@@ -44,7 +36,7 @@ vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &
   }
   // Infinite or absurd intrinsics (px = 1e300, u0 = NaN) would give NaN projections, regions and poses.
   vpSSLCameraFile::check(cam, "vpSSLTracker: camera");
-  if (!isFinite(vMc)) {
+  if (!vpSSLFinite::isFinite(vMc)) {
     throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle) is not finite");
   }
   const double t = vpSSLSequenceInfo::maxMountTranslation();
@@ -120,8 +112,10 @@ bool vpSSLTracker::heldLandmarkEstimate(vpTranslationVector &t) const
   for (unsigned int i = 0; i < m_filter.getNbParticles(); ++i) {
     const vpHomogeneousMatrix P = m_filter.getParticlePose(i);
     const double w = m_filter.getParticleWeight(i);
+    double c[3];
+    vpSSLPointTransform::apply(P, l.x, l.y, l.z, c);
     for (unsigned int r = 0; r < 3; ++r) {
-      held[r] += w * (P[r][0] * l.x + P[r][1] * l.y + P[r][2] * l.z + P[r][3]);
+      held[r] += w * c[r];
     }
     sum += w;
   }
@@ -181,7 +175,7 @@ void vpSSLTracker::selectPose()
   // accepts. The ranking is the better judge among hypotheses that all agree with the filter (two branches of
   // a nearly face-on view are close, and the filter's mean is a few degrees off); the filter only vetoes.
   for (const vpSSLPoseHypothesis &h : m_hypotheses) {
-    if (h.positionOnly || !isFinite(h.cMo)) {
+    if (h.positionOnly || !vpSSLFinite::isFinite(h.cMo)) {
       continue; // no orientation to choose
     }
     const double distance = (h.cMo.getTranslationVector() - tMean).frobeniusNorm();
@@ -216,7 +210,7 @@ vpSSLTrackerState vpSSLTracker::track(const vpImage<unsigned char> &I, const vpH
   }
   vpSSLImageCheck::input(I, "vpSSLTracker::track");
   m_odometryUsed = false;
-  const bool finite = isFinite(oMv);
+  const bool finite = vpSSLFinite::isFinite(oMv);
   if (m_state != SSL_TRACKER_SEARCHING) {
     if (m_hasOdometry && finite) {
       // Vehicle displacement since the previous image, v1Mv2 = (oMv1)^-1 oMv2 (paper Sec. 3.3).
@@ -258,9 +252,9 @@ void vpSSLTracker::predictRegions(unsigned int width, unsigned int height)
   const double half = 0.5 * m_roiSize;
   bool allInside = true;
   for (const vpSSLTargetLandmark &l : m_target.getLandmarks()) {
-    const double X = cMo[0][0] * l.x + cMo[0][1] * l.y + cMo[0][2] * l.z + cMo[0][3];
-    const double Y = cMo[1][0] * l.x + cMo[1][1] * l.y + cMo[1][2] * l.z + cMo[1][3];
-    const double Z = cMo[2][0] * l.x + cMo[2][1] * l.y + cMo[2][2] * l.z + cMo[2][3];
+    double c[3];
+    vpSSLPointTransform::apply(cMo, l.x, l.y, l.z, c);
+    const double X = c[0], Y = c[1], Z = c[2];
     if (!(Z > 0.) || !std::isfinite(X) || !std::isfinite(Y)) {
       allInside = false;
       continue;
@@ -297,9 +291,9 @@ double vpSSLTracker::apparentRadius(const vpHomogeneousMatrix &cMo, const vpSSLT
   for (unsigned int k = 0; k < nbRays; ++k) {
     const double a = 2. * M_PI * k / nbRays;
     const double px = l.x + l.radius * std::cos(a), py = l.y + l.radius * std::sin(a);
-    const double X = cMo[0][0] * px + cMo[0][1] * py + cMo[0][2] * l.z + cMo[0][3];
-    const double Y = cMo[1][0] * px + cMo[1][1] * py + cMo[1][2] * l.z + cMo[1][3];
-    const double Z = cMo[2][0] * px + cMo[2][1] * py + cMo[2][2] * l.z + cMo[2][3];
+    double c[3];
+    vpSSLPointTransform::apply(cMo, px, py, l.z, c);
+    const double X = c[0], Y = c[1], Z = c[2];
     if (!(Z > 0.)) {
       continue; // the circle crosses the image plane: no sensible radius along this ray
     }
@@ -492,9 +486,9 @@ double vpSSLTracker::reprojectionError(const vpHomogeneousMatrix &cMo) const
   double sum = 0.;
   for (const vpSSLObservation &o : m_observations) {
     const vpSSLTargetLandmark &l = m_target.getLandmark(static_cast<size_t>(o.label));
-    const double X = cMo[0][0] * l.x + cMo[0][1] * l.y + cMo[0][2] * l.z + cMo[0][3];
-    const double Y = cMo[1][0] * l.x + cMo[1][1] * l.y + cMo[1][2] * l.z + cMo[1][3];
-    const double Z = cMo[2][0] * l.x + cMo[2][1] * l.y + cMo[2][2] * l.z + cMo[2][3];
+    double c[3];
+    vpSSLPointTransform::apply(cMo, l.x, l.y, l.z, c);
+    const double X = c[0], Y = c[1], Z = c[2];
     if (!(Z > 0.)) {
       return std::numeric_limits<double>::infinity();
     }
@@ -514,9 +508,9 @@ std::vector<vpFeaturePoint> vpSSLTracker::getFeaturePoints() const
   const vpHomogeneousMatrix cMo = getPose();
   for (size_t k = 0; k < m_target.size(); ++k) {
     const vpSSLTargetLandmark &l = m_target.getLandmark(k);
-    const double X = cMo[0][0] * l.x + cMo[0][1] * l.y + cMo[0][2] * l.z + cMo[0][3];
-    const double Y = cMo[1][0] * l.x + cMo[1][1] * l.y + cMo[1][2] * l.z + cMo[1][3];
-    const double Z = cMo[2][0] * l.x + cMo[2][1] * l.y + cMo[2][2] * l.z + cMo[2][3];
+    double c[3];
+    vpSSLPointTransform::apply(cMo, l.x, l.y, l.z, c);
+    const double X = c[0], Y = c[1], Z = c[2];
     if (!(Z > 0.)) {
       continue; // behind the camera: no feature a servo could use
     }

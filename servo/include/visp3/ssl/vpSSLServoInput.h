@@ -17,13 +17,6 @@
 class vpSSLTracker;
 
 /*!
-  \defgroup group_ssl_servo Visual-servo homing and docking
-  Library visp_ssl_servo: the image-based servo law with a depth stand-off for an under-actuated vehicle
-  (vpSSLServoLaw), the homing behaviour of the paper's Sec. 5.2 (vpSSLHomingBehaviour) and their per-frame
-  input (vpSSLServoInput). See doc/servo.md.
-*/
-
-/*!
   \struct vpSSLServoPoint
   \ingroup group_ssl_servo
   \brief One matched target point: where it is on the target and where the camera sees it now.

@@ -20,7 +20,8 @@
 struct vpSSLCorpusLandmarkResult
 {
   bool found = false;      ///< A detected centre lies within 15 % of the true radius of the true centre.
-  double u = 0., v = 0.;   ///< That detection's centre (px).
+  double u = 0.;           ///< That detection's centre (px).
+  double v = 0.;           ///< That detection's centre (px).
   double radius = 0.;      ///< Its major semi-axis (px).
   double centreError = 0.; ///< Distance to the true centre (px).
   double radiusError = 0.; ///< (radius - true a) / true a.

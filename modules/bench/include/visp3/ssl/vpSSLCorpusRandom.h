@@ -10,12 +10,6 @@
 #include <random>
 
 /*!
-  \defgroup group_ssl_bench Independent evaluation corpus
-  Random underwater views of printed targets, with their exact truth, made by an image path that shares no
-  code with the simulator (visp_ssl_sim), and the recall tables of the detector on them.
-*/
-
-/*!
   \class vpSSLCorpusRandom
   \ingroup group_ssl_bench
   \brief std::mt19937_64 with its distributions written out here, so that a corpus depends on its seed only

@@ -39,7 +39,8 @@ struct vpSSLCorpusCamera
 */
 struct vpSSLCorpusFish
 {
-  double u = 0., v = 0.;         ///< Body centre (px).
+  double u = 0.;                 ///< Body centre (px).
+  double v = 0.;                 ///< Body centre (px).
   double length = 40.;           ///< Body length (px), the tail adds 0.35 of it.
   double width = 14.;            ///< Body width (px).
   double angle = 0.;             ///< Body axis from the u axis (rad).
@@ -56,11 +57,14 @@ struct vpSSLCorpusFish
 */
 struct vpSSLCorpusPatch
 {
-  int photo = -1;                ///< Photo index (vpSSLCorpusPhotos), -1: none.
-  double u0 = 0., v0 = 0.;       ///< Top-left corner (px).
-  double u1 = 0., v1 = 0.;       ///< Bottom-right corner (px).
-  double cropX = 0., cropY = 0.; ///< Where in the photo (0..1) the patch is cut.
-  double distance = 1.;          ///< Distance from the camera (m).
+  int photo = -1;       ///< Photo index (vpSSLCorpusPhotos), -1: none.
+  double u0 = 0.;       ///< Top-left corner (px).
+  double v0 = 0.;       ///< Top-left corner (px).
+  double u1 = 0.;       ///< Bottom-right corner (px).
+  double v1 = 0.;       ///< Bottom-right corner (px).
+  double cropX = 0.;    ///< Where in the photo (0..1) the patch is cut.
+  double cropY = 0.;    ///< Where in the photo (0..1) the patch is cut.
+  double distance = 1.; ///< Distance from the camera (m).
 };
 
 /*!
@@ -89,17 +93,21 @@ struct vpSSLCorpusViewParams
     TURBID   ///< Visibility 1-3 m.
   };
 
-  uint64_t seed = 1;        ///< Seed of the random parts of the rendering (textures, noise).
-  bool hasTarget = true;    ///< False for a negative view (no target sheet).
-  vpSSLCorpusCamera camera; ///< Camera.
-  vpHomogeneousMatrix cMo;  ///< Pose of the target frame (the sheet's plane) in the camera frame.
-  double cropLeft = -1., cropTop = -1., cropRight = 1., cropBottom = 1.; ///< Sheet rectangle kept (target frame, m).
-  double paper = 0.85;                                                   ///< Paper albedo.
-  double ink = 0.05;                                                     ///< Ink albedo.
-  Background background = SAND;                                          ///< Surroundings.
-  int photo = -1;                                                        ///< Photo index of a PHOTO background.
+  uint64_t seed = 1;                            ///< Seed of the random parts of the rendering (textures, noise).
+  bool hasTarget = true;                        ///< False for a negative view (no target sheet).
+  vpSSLCorpusCamera camera;                     ///< Camera.
+  vpHomogeneousMatrix cMo;                      ///< Pose of the target frame (the sheet's plane) in the camera frame.
+  double cropLeft = -1.;                        ///< Sheet rectangle kept (target frame, m).
+  double cropTop = -1.;                         ///< Sheet rectangle kept (target frame, m).
+  double cropRight = 1.;                        ///< Sheet rectangle kept (target frame, m).
+  double cropBottom = 1.;                       ///< Sheet rectangle kept (target frame, m).
+  double paper = 0.85;                          ///< Paper albedo.
+  double ink = 0.05;                            ///< Ink albedo.
+  Background background = SAND;                 ///< Surroundings.
+  int photo = -1;                               ///< Photo index of a PHOTO background.
   double textureMetres = 2.;                    ///< Side of the background texture's tile on the plane (m).
-  double textureX = 0., textureY = 0.;          ///< Offset of the background texture on the plane (m).
+  double textureX = 0.;                         ///< Offset of the background texture on the plane (m).
+  double textureY = 0.;                         ///< Offset of the background texture on the plane (m).
   double backgroundGain = 1.;                   ///< Albedo scale of the background.
   double sheet2[5] = {0., 0., 0.297, 0.21, 0.}; ///< Second sheet: centre X, Y, width, height (m), angle (rad).
   double sheet2Albedo = 0.8;                    ///< Second sheet's albedo.
@@ -110,7 +118,8 @@ struct vpSSLCorpusViewParams
   double ambient = 1.;                          ///< Ambient light (daylight from above), uniform.
   double spot = 0.;                             ///< Spotlight strength at 1 m on its axis.
   double spotWidth = 0.5;                       ///< Spotlight's angular width (rad, Gaussian).
-  double spotX = 0., spotY = 0.;                ///< Spotlight axis in the camera frame (x/z, y/z).
+  double spotX = 0.;                            ///< Spotlight axis in the camera frame (x/z, y/z).
+  double spotY = 0.;                            ///< Spotlight axis in the camera frame (x/z, y/z).
   double vignetting = 0.2;                      ///< Relative light loss at the image corners.
   double gaussSigma = 0.;                       ///< Gaussian blur (defocus and forward scatter), sigma in px.
   double motionLength = 0.;                     ///< Motion blur length (px).
@@ -137,24 +146,27 @@ struct vpSSLCorpusViewParams
 */
 struct vpSSLCorpusLandmarkTruth
 {
-  std::string name;                    ///< Landmark name in the target ("B", "S1", "S2").
-  double u = 0., v = 0.;               ///< Projection of the circle's centre (px): what the detector must report.
-  double ellipseU = 0., ellipseV = 0.; ///< Centre of the outer ellipse (px), not the same point under perspective.
-  double a = 0., b = 0.;               ///< Semi-axes of the outer ellipse, a >= b (px).
-  double theta = 0.;                   ///< Major axis angle from the u axis towards +v (rad).
-  bool isEllipse = false;              ///< False when the circle is not wholly in front of the camera.
-  bool wholeInFrame = false;           ///< The whole outer disc is inside the image.
-  bool centreInFrame = false;          ///< The centre is inside the image.
-  double viewAngle = 0.;               ///< Angle between the line of sight to the centre and the sheet's normal (deg).
-  double range = 0.;                   ///< Distance from the camera to the centre (m).
-  double rangeOverVisibility = 0.;     ///< range / V.
-  double blurSigma = 0.;               ///< Total blur sigma (px): Gaussian and motion (length^2 / 12) in quadrature.
-  double contrast = 0.;          ///< Grey difference between paper and ink at the landmark, after water and camera.
-  double noiseSigma = 0.;        ///< Total grey noise sigma at the landmark's mid-level (shot, read, quantisation).
-  double contrastOverNoise = 0.; ///< contrast / noiseSigma.
-  double sheetMargin = 0.;       ///< White paper between the outer ring and the kept sheet's nearest edge, in radii.
-  double occludedFraction = 0.;  ///< Fraction of the outer disc's in-frame pixels covered by occluders.
-  bool centreOccluded = false;   ///< An occluder covers the centre pixel (never drawn so; checked).
+  std::string name;                ///< Landmark name in the target ("B", "S1", "S2").
+  double u = 0.;                   ///< Projection of the circle's centre (px): what the detector must report.
+  double v = 0.;                   ///< Projection of the circle's centre (px): what the detector must report.
+  double ellipseU = 0.;            ///< Centre of the outer ellipse (px), not the same point under perspective.
+  double ellipseV = 0.;            ///< Centre of the outer ellipse (px), not the same point under perspective.
+  double a = 0.;                   ///< Semi-axes of the outer ellipse, a >= b (px).
+  double b = 0.;                   ///< Semi-axes of the outer ellipse, a >= b (px).
+  double theta = 0.;               ///< Major axis angle from the u axis towards +v (rad).
+  bool isEllipse = false;          ///< False when the circle is not wholly in front of the camera.
+  bool wholeInFrame = false;       ///< The whole outer disc is inside the image.
+  bool centreInFrame = false;      ///< The centre is inside the image.
+  double viewAngle = 0.;           ///< Angle between the line of sight to the centre and the sheet's normal (deg).
+  double range = 0.;               ///< Distance from the camera to the centre (m).
+  double rangeOverVisibility = 0.; ///< range / V.
+  double blurSigma = 0.;           ///< Total blur sigma (px): Gaussian and motion (length^2 / 12) in quadrature.
+  double contrast = 0.;            ///< Grey difference between paper and ink at the landmark, after water and camera.
+  double noiseSigma = 0.;          ///< Total grey noise sigma at the landmark's mid-level (shot, read, quantisation).
+  double contrastOverNoise = 0.;   ///< contrast / noiseSigma.
+  double sheetMargin = 0.;         ///< White paper between the outer ring and the kept sheet's nearest edge, in radii.
+  double occludedFraction = 0.;    ///< Fraction of the outer disc's in-frame pixels covered by occluders.
+  bool centreOccluded = false;     ///< An occluder covers the centre pixel (never drawn so; checked).
   //! Headline eligibility: whole in frame, radius >= 8 px, centre not occluded, contrast >= 3x noise.
   bool eligible() const { return wholeInFrame && a >= 8. && !centreOccluded && contrastOverNoise >= 3.; }
 };

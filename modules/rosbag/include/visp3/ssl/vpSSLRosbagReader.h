@@ -18,12 +18,6 @@
 #include <visp3/ssl/vpSSLSequenceFrame.h>
 
 /*!
-  \defgroup group_ssl_rosbag ROS 1 bags
-  Library visp_ssl_rosbag, built when CMake finds Debian's ROS 1 packages (option VISP_SSL_WITH_ROSBAG): a ROS 1
-  bag read as a recorded sequence (vpSSLRosbagReader). See doc/recordings.md.
-*/
-
-/*!
   \struct vpSSLRosbagTopic
   \ingroup group_ssl_rosbag
   \brief One topic of a bag, as vpSSLRosbagReader::getTopics() lists it.

@@ -14,7 +14,7 @@
 
 /*!
   \class vpSSLAprilTagSheet
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief One AprilTag 36h11 printed in the middle of a white sheet, for the AprilTag baseline rendered by
   vpSSLRenderer on the same views as the SSL targets.
 

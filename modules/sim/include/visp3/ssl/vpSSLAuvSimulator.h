@@ -16,7 +16,7 @@
 
 /*!
   \class vpSSLAuvSimulator
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief A 6-DOF rigid-body model of a small AUV with a forward-looking camera, velocity-controlled through its
   thrusters, for closing the visual-servo loop in simulation.
 

@@ -17,7 +17,7 @@ class vpSSLScenario;
 
 /*!
   \class vpSSLBackground
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief The scene behind a simulated target, as a vpSSLRenderer backdrop placed in a vpSSLScenario's world.
 
   - \c water: open water all round: rays that miss the target see the veiling light.

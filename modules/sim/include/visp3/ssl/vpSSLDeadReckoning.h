@@ -11,7 +11,7 @@
 
 /*!
   \class vpSSLDeadReckoning
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief The odometry oMv a small AUV computes from its own sensors, given its true motion.
 
   Frames: the world is North-East-Down (z down, depth positive); the vehicle frame is x forward, y

@@ -15,7 +15,7 @@
 
 /*!
   \class vpSSLPlot
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief One panel of x-y series with axes, ticks, labels and a legend, drawn without a display.
 
   ViSP's vpPlot draws live into a window; benchmark runs and closed-loop scenarios run headless on CI

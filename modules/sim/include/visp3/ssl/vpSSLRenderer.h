@@ -17,7 +17,7 @@
 
 /*!
   \class vpSSLRenderer
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief Ray-casts a printed planar target into a camera view at a ground-truth pose.
 
   Each pixel is split into n x n sub-pixels; each sub-pixel's ray (through the camera model,

@@ -16,7 +16,7 @@
 
 /*!
   \class vpSSLScenario
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief A named trajectory of an AUV with a forward-looking camera around a target: the true poses of every
   frame, the camera-to-target ground truth cMo and the vehicle's odometry oMv with realistic drift.
 

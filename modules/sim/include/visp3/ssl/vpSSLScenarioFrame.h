@@ -10,7 +10,7 @@
 
 /*!
   \struct vpSSLScenarioFrame
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief One frame of a vpSSLScenario: where the vehicle, its camera and the target are.
 
   World frame: North-East-Down, the water surface at z = 0. Target frame: the sheet frame of the SSL

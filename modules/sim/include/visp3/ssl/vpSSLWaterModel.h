@@ -16,7 +16,7 @@
 
 /*!
   \class vpSSLWaterModel
-  \ingroup group_ssl
+  \ingroup group_ssl_sim
   \brief Turns the reflectance and range images of vpSSLRenderer into what an underwater camera sees.
 
   Per colour channel c in (R, G, B), at a pixel of reflectance \f$ \rho \f$ seen at range \f$ z \f$, the

@@ -39,6 +39,9 @@ enum vpSSLDirection
   computeReference() is the plain implementation that defines the map; compute() is the fast one
   (SIMD with runtime dispatch, threads, regions of interest) and must give the same map.
 
+  Threads: the const methods (compute(), computeReference(), evaluate(), cumulative()) are safe to call from
+  several threads on one object (the buffers compute() reuses are per thread); the setters are not.
+
   \code
   vpSSLMatchingFunction match(40, 0.5);
   vpImage<int> M;

@@ -181,7 +181,7 @@ private:
   struct Particle
   {
     double t[3]; // target position in the camera frame (m)
-    double q[4]; // unit quaternion (w, x, y, z) of cRo
+    double q[4]; // unit quaternion of cRo, in Eigen's coefficient order (x, y, z, w)
   };
 
   vpSSLTarget m_target;

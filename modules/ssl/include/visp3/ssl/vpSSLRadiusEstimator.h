@@ -36,6 +36,8 @@ struct Ellipse;
   The centre is refined from the midpoints of the ring edges on opposite rays; under perspective the
   rings are not concentric (their centres drift with the square of their radius), so the midpoints
   are extrapolated to radius 0, the projection of the landmark's centre.
+
+  Threads: estimate() keeps the rays it reads in the object, so it is not const: one estimator per thread.
 */
 class VISP_SSL_EXPORT vpSSLRadiusEstimator
 {
@@ -107,7 +109,7 @@ private:
   bool selectRadii(const double *ref, double R[8], bool ok[8], double &scale);
   bool refineCentre(const vpImage<unsigned char> &I, double u0, double v0, double scale, double &u, double &v,
                     double R[8], bool ok[8]);
-  bool solidRings(int d, double radius) const;
+  bool solidRings(int d, double radius);
   bool ringEdge(int d, double expected, double halfWidth, double &position);
   bool ringsAllAround(const vpImage<unsigned char> &I, double u, double v,
                       const vpSSLRadiusEstimatorInternal::Ellipse &e) const;
@@ -124,10 +126,10 @@ private:
   // Per-ray profiles and their prefix sums, reused between candidates.
   std::vector<float> m_profile[8];
   std::vector<double> m_prefix[8];
-  mutable std::vector<double> m_mean3[8];       // means of three neighbouring samples (solidRings()), read as needed
-  mutable std::vector<double> m_grid, m_scores; // radius search scratch
-  std::vector<uint32_t> m_survivors, m_passed;  // radii of the grid that pass the SIMD screen, and all its tests
-  std::vector<double> m_passedScores;           // the scores of the latter
+  std::vector<double> m_mean3[8];              // means of three neighbouring samples (solidRings()), read as needed
+  std::vector<double> m_grid, m_scores;        // radius search scratch
+  std::vector<uint32_t> m_survivors, m_passed; // radii of the grid that pass the SIMD screen, and all its tests
+  std::vector<double> m_passedScores;          // the scores of the latter
   std::vector<Candidate> m_candidates[8];
   std::vector<double> m_valid; // selectRadii() scratch
   // Centre of the rays (readRays()); each ray is read on first use (ray()).

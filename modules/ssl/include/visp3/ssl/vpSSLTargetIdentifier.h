@@ -39,6 +39,9 @@ struct VISP_SSL_EXPORT vpSSLTargetMatch
   As in the paper, when fewer than three landmarks are identified, a lone big landmark is the
   target (case 1) and two landmarks that cannot be told apart count as the big one alone (case 2).
 
+  Threads: identify() is const and safe to call from several threads on one object (its buffers are per
+  thread); the setters are not.
+
   \code
   vpSSLTargetIdentifier identifier(vpSSLTarget::ssl3a3());
   vpSSLTargetMatch match = identifier.identify(landmarks);
@@ -68,22 +71,6 @@ private:
   double m_radiusTol;
   double m_distanceTol;
   int m_big; // index of the biggest target landmark
-
-public:
-  //! \cond INTERNAL
-  struct Ellipse2x2 // affine map of the unit circle onto a landmark's outer ellipse, and its inverse
-  {
-    double m[2][2];
-    double inv[2][2];
-  };
-  //! \endcond
-
-private:
-  // Per-call buffers, reused so that identify() does not allocate once they have grown.
-  mutable std::vector<Ellipse2x2> m_maps;
-  mutable std::vector<int> m_hypDetection; // target-landmark labels, K per hypothesis
-  mutable std::vector<unsigned int> m_hypCount;
-  mutable std::vector<double> m_hypResidual;
 };
 
 #endif
