@@ -15,6 +15,7 @@
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 
 #include "ssl_tutorial_common.h"
@@ -379,7 +380,7 @@ int run(int argc, char **argv)
         name = vpIoTools::getName(path);
         vpSSLImageIo::read(I, path);
       }
-      vpSSLImageIo::check(I, name.c_str());
+      vpSSLInputLimits::checkImage(I, name.c_str());
     } catch (const vpException &e) {
       std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
       if (json) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <visp3/core/vpException.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 namespace {
 // A JSON value with the source span and line it came from, so that errors name the line and "water" can be
@@ -350,7 +351,7 @@ vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &textIn, const s
   for (unsigned int i = 0; i < 6; ++i) {
     if (vMc.items[i].kind != JsonValue::Number)
       parser.fail("camera_to_vehicle: element " + std::to_string(i + 1) + " is not a number", vMc.items[i].line);
-    const double bound = i < 3 ? maxMountTranslation() : maxMountRotation();
+    const double bound = i < 3 ? vpSSLInputLimits::maxMountTranslation() : vpSSLInputLimits::maxMountRotation();
     if (std::fabs(vMc.items[i].number) > bound) {
       std::ostringstream os;
       os << "camera_to_vehicle: element " << i + 1 << " is " << vMc.items[i].number << ", beyond +-" << bound
