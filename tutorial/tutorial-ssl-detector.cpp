@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpImageDraw.h>
 #include <visp3/core/vpIoTools.h>
@@ -68,31 +70,11 @@ output folder. Every error is one line on stderr.
 
 const char *kProgram = "tutorial-ssl-detector";
 
+// A JSON string literal; bytes that are not UTF-8 (a file name in another encoding) become U+FFFD, so that every
+// line stays valid JSON.
 std::string jsonString(const std::string &s)
 {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-    case '"':
-      out += "\\\"";
-      break;
-    case '\\':
-      out += "\\\\";
-      break;
-    case '\n':
-      out += "\\n";
-      break;
-    default:
-      if (static_cast<unsigned char>(c) < 0x20) {
-        char buf[8];
-        std::snprintf(buf, sizeof(buf), "\\u%04x", c);
-        out += buf;
-      } else {
-        out += c;
-      }
-    }
-  }
-  return out + "\"";
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string num(double x, int digits)
