@@ -2,296 +2,302 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <sstream>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include <visp3/core/vpException.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
 
 namespace {
-// A JSON value with the source span and line it came from, so that errors name the line and "water" can be
-// kept verbatim.
-struct JsonValue
+using Json = nlohmann::ordered_json;
+
+// A character iterator that publishes how far nlohmann's lexer has read: SAX events carry no position, and
+// every error must name a line, and "water" must be kept verbatim (its byte span).
+class TrackedIterator
+{
+public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char *;
+  using reference = const char &;
+
+  TrackedIterator(const char *p, const char **read) : m_p(p), m_read(read) {}
+  reference operator*() const { return *m_p; }
+  TrackedIterator &operator++()
+  {
+    *m_read = ++m_p;
+    return *this;
+  }
+  TrackedIterator operator++(int)
+  {
+    TrackedIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const TrackedIterator &o) const { return m_p == o.m_p; }
+  bool operator!=(const TrackedIterator &o) const { return m_p != o.m_p; }
+
+private:
+  const char *m_p;
+  const char **m_read;
+};
+
+// A top-level member of sequence.json, as much of it as the checks need.
+struct Member
 {
   enum Kind
   {
-    Null,
-    Bool,
-    Number,
+    Other,
     String,
     Array,
     Object
   };
-  Kind kind = Null;
-  double number = 0.;
-  std::string text;               // String value
-  std::vector<std::string> names; // Object member names, parallel to items
-  std::vector<JsonValue> items;   // Array elements or object member values
+  Kind kind = Other;
   int line = 1;
-  size_t begin = 0, end = 0;
+  std::string text;            // a string's value
+  size_t begin = 0, end = 0;   // an object's span in the text ("water")
+  size_t size = 0;             // an array's number of elements
+  std::vector<bool> isNumber;  // its first six elements: numbers or not
+  std::vector<double> numbers; // their values
+  std::vector<int> lines;      // their lines
 };
 
-// Strict RFC 8259 recursive-descent parser; sequence.json is tiny, so clarity beats speed.
-class JsonParser
+// Strict RFC 8259 reading through nlohmann's SAX parser, keeping the root object's members with their lines.
+class Reader : public nlohmann::json_sax<Json>
 {
 public:
-  JsonParser(const std::string &text, const std::string &file) : m_s(text), m_file(file) {}
+  Reader(const std::string &text, const std::string &file) : m_text(text), m_file(file), m_read(text.data()) {}
 
-  JsonValue parseDocument()
+  void parse()
   {
-    JsonValue v = parseValue(0);
-    skipSpace();
-    if (m_pos != m_s.size())
-      fail("unexpected " + describe() + " after the end of the JSON value");
-    return v;
+    const TrackedIterator first(m_text.data(), &m_read), last(m_text.data() + m_text.size(), &m_read);
+    Json::sax_parse(first, last, this, nlohmann::detail::input_format_t::json, true, false);
   }
 
-  [[noreturn]] void fail(const std::string &what, int line = 0) const
+  [[noreturn]] void fail(const std::string &what, int line) const
   {
-    throw vpException(vpException::badValue, m_file + ":" + std::to_string(line > 0 ? line : m_line) + ": " + what);
+    throw vpException(vpException::badValue, m_file + ":" + std::to_string(line) + ": " + what);
+  }
+
+  int rootLine = 1;
+  bool rootIsObject = false;
+  std::vector<std::string> names;
+  std::vector<Member> members;
+
+  bool null() override { return scalar(false, 0.); }
+  bool boolean(bool) override { return scalar(false, 0.); }
+  bool number_integer(number_integer_t v) override { return scalar(true, static_cast<double>(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return scalar(true, static_cast<double>(v)); }
+  bool number_float(number_float_t v, const string_t &) override { return scalar(true, v); }
+  bool binary(binary_t &) override { return scalar(false, 0.); }
+  bool string(string_t &s) override
+  {
+    if (m_depth == 1 && rootIsObject) {
+      Member &m = member();
+      m.kind = Member::String;
+      m.text = s;
+    }
+    return scalar(false, 0.);
+  }
+
+  bool start_object(std::size_t) override
+  {
+    open();
+    if (m_depth == 0) {
+      rootIsObject = true;
+    } else if (m_depth == 1 && rootIsObject) {
+      member().kind = Member::Object;
+      member().begin = at();
+    }
+    m_keys.emplace_back();
+    ++m_depth;
+    return true;
+  }
+  bool end_object() override
+  {
+    --m_depth;
+    m_keys.pop_back();
+    if (m_depth == 1 && rootIsObject) {
+      member().end = at() + 1;
+    }
+    return true;
+  }
+  bool key(string_t &name) override
+  {
+    const int line = lineOf(at());
+    if (!m_keys.back().insert(name).second) {
+      fail("member \"" + name + "\" appears twice", line);
+    }
+    if (m_depth == 1 && rootIsObject) {
+      names.push_back(name);
+      members.emplace_back();
+    }
+    return true;
+  }
+  bool start_array(std::size_t) override
+  {
+    open();
+    if (m_depth == 1 && rootIsObject) {
+      member().kind = Member::Array;
+    }
+    m_keys.emplace_back(); // no keys in an array: the stack follows the nesting
+    ++m_depth;
+    return true;
+  }
+  bool end_array() override
+  {
+    --m_depth;
+    m_keys.pop_back();
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string &, const nlohmann::detail::exception &e) override
+  {
+    fail(syntaxError(position, e.what()), lineOf(lastReadBefore(position)));
   }
 
 private:
-  // Nesting limit so that a hostile file cannot overflow the stack.
+  // Nesting limit, as for any input of the plugin: a hostile file cannot make the reader hold deep stacks.
   static constexpr int maxDepth = 64;
 
-  std::string describe() const
+  Member &member() { return members.back(); }
+
+  // Offset of the last byte read, and line of the last non-blank byte at or before an offset: a number is
+  // only known to end when the byte after it is read, and that byte may be a line feed.
+  size_t at() const { return static_cast<size_t>(m_read - m_text.data()) - 1; }
+  size_t lastReadBefore(size_t position) const
   {
-    if (m_pos >= m_s.size())
-      return "end of file";
-    return std::string("'") + m_s[m_pos] + "'";
+    size_t p = std::min(position, m_text.size());
+    while (p > 0 && (m_text[p - 1] == ' ' || m_text[p - 1] == '\t' || m_text[p - 1] == '\r' || m_text[p - 1] == '\n')) {
+      --p;
+    }
+    return p == 0 ? 0 : p - 1;
+  }
+  // Lines are counted incrementally: events come in text order, so a large file costs one pass.
+  int lineOf(size_t offset)
+  {
+    if (offset < m_counted) {
+      m_counted = 0;
+      m_countedLine = 1;
+    }
+    for (; m_counted < offset && m_counted < m_text.size(); ++m_counted) {
+      m_countedLine += m_text[m_counted] == '\n';
+    }
+    return m_countedLine;
   }
 
-  void skipSpace()
+  // A value starts at the last byte read (a container) or ends there (a scalar, but for a number's lookahead).
+  void value(bool isNumber, double number, int line)
   {
-    while (m_pos < m_s.size()) {
-      char c = m_s[m_pos];
-      if (c == '\n')
-        ++m_line;
-      else if (c != ' ' && c != '\t' && c != '\r')
-        return;
-      ++m_pos;
+    if (m_depth == 0) {
+      rootLine = line;
+    } else if (!rootIsObject) {
+      return; // a root array: an error once parsed, whatever it holds
+    } else if (m_depth == 1) {
+      member().line = line;
+    } else if (m_depth == 2 && member().kind == Member::Array) {
+      Member &m = member();
+      if (m.size < 6) {
+        m.isNumber.push_back(isNumber);
+        m.numbers.push_back(number);
+        m.lines.push_back(line);
+      }
+      ++m.size;
     }
   }
 
-  bool accept(char c)
+  void open()
   {
-    skipSpace();
-    if (m_pos < m_s.size() && m_s[m_pos] == c) {
-      ++m_pos;
-      return true;
+    const int line = lineOf(at());
+    if (m_depth >= maxDepth) {
+      fail("nesting deeper than " + std::to_string(maxDepth) + " levels", line);
     }
-    return false;
+    value(false, 0., line);
   }
 
-  void expect(char c, const char *context)
+  bool scalar(bool isNumber, double number)
   {
-    if (!accept(c))
-      fail(std::string("expected '") + c + "' " + context + ", got " + describe());
+    value(isNumber, number, lineOf(lastReadBefore(at() + 1)));
+    return true;
   }
 
-  JsonValue parseValue(int depth)
+  // nlohmann's message "syntax error while parsing CONTEXT - PROBLEM; expected TOKEN" said in the plugin's words.
+  // Its last token string is not used: the lexer keeps structural characters in it across tokens.
+  std::string syntaxError(size_t position, const std::string &message) const
   {
-    if (depth > maxDepth)
-      fail("nesting deeper than " + std::to_string(maxDepth) + " levels");
-    skipSpace();
-    JsonValue v;
-    v.line = m_line;
-    v.begin = m_pos;
-    if (m_pos >= m_s.size())
-      fail("expected a value, got end of file");
-    char c = m_s[m_pos];
-    if (c == '{') {
-      v.kind = JsonValue::Object;
-      ++m_pos;
-      if (!accept('}')) {
-        do {
-          skipSpace();
-          if (m_pos >= m_s.size() || m_s[m_pos] != '"')
-            fail("expected a member name in double quotes, got " + describe());
-          int nameLine = m_line;
-          std::string name = parseString();
-          for (const std::string &n : v.names)
-            if (n == name)
-              fail("member \"" + name + "\" appears twice", nameLine);
-          expect(':', "after a member name");
-          v.names.push_back(name);
-          v.items.push_back(parseValue(depth + 1));
-        } while (accept(','));
-        expect('}', "or ',' after an object member");
+    const size_t dash = message.find(" - ");
+    std::string problem = dash == std::string::npos ? message : message.substr(dash + 3);
+    const size_t lastRead = problem.find("; last read");
+    const std::string lexer = lastRead == std::string::npos ? std::string() : problem.substr(0, lastRead);
+    if (lexer.compare(0, 34, "invalid string: control character ") == 0) {
+      return "control character inside a string (a missing closing quote?)";
+    }
+    if (lexer.compare(0, 16, "invalid number; ") == 0) {
+      return "malformed number: " + lexer.substr(16);
+    }
+    if (lexer.compare(0, 15, "invalid string:") == 0) {
+      return lexer;
+    }
+    const size_t overflow = message.find("number overflow parsing ");
+    if (overflow != std::string::npos) {
+      return "number out of range: " + message.substr(overflow + 24);
+    }
+    // What was found: a token's kind, or the byte the lexer stopped at.
+    std::string got;
+    if (problem.compare(0, 11, "unexpected ") == 0) {
+      got = problem.substr(11, problem.find(';') == std::string::npos ? std::string::npos : problem.find(';') - 11);
+      if (got == "end of input") {
+        got = "end of file";
       }
-    } else if (c == '[') {
-      v.kind = JsonValue::Array;
-      ++m_pos;
-      if (!accept(']')) {
-        do {
-          v.items.push_back(parseValue(depth + 1));
-        } while (accept(','));
-        expect(']', "or ',' after an array element");
-      }
-    } else if (c == '"') {
-      v.kind = JsonValue::String;
-      v.text = parseString();
-    } else if (c == '-' || (c >= '0' && c <= '9')) {
-      v.kind = JsonValue::Number;
-      v.number = parseNumber();
-    } else if (m_s.compare(m_pos, 4, "true") == 0 || m_s.compare(m_pos, 4, "null") == 0) {
-      v.kind = c == 't' ? JsonValue::Bool : JsonValue::Null;
-      m_pos += 4;
-    } else if (m_s.compare(m_pos, 5, "false") == 0) {
-      v.kind = JsonValue::Bool;
-      m_pos += 5;
     } else {
-      fail("expected a value, got " + describe());
+      const size_t at = lastReadBefore(position);
+      got = at < m_text.size() ? std::string("'") + m_text[at] + "'" : "end of file";
     }
-    v.end = m_pos;
-    return v;
-  }
-
-  unsigned hex4()
-  {
-    if (m_pos + 4 > m_s.size())
-      fail("truncated \\u escape");
-    unsigned u = 0;
-    auto r = std::from_chars(m_s.data() + m_pos, m_s.data() + m_pos + 4, u, 16);
-    if (r.ptr != m_s.data() + m_pos + 4)
-      fail("bad \\u escape");
-    m_pos += 4;
-    return u;
-  }
-
-  static void appendUtf8(std::string &out, unsigned cp)
-  {
-    if (cp < 0x80) {
-      out += char(cp);
-    } else if (cp < 0x800) {
-      out += char(0xC0 | (cp >> 6));
-      out += char(0x80 | (cp & 0x3F));
-    } else if (cp < 0x10000) {
-      out += char(0xE0 | (cp >> 12));
-      out += char(0x80 | ((cp >> 6) & 0x3F));
-      out += char(0x80 | (cp & 0x3F));
-    } else {
-      out += char(0xF0 | (cp >> 18));
-      out += char(0x80 | ((cp >> 12) & 0x3F));
-      out += char(0x80 | ((cp >> 6) & 0x3F));
-      out += char(0x80 | (cp & 0x3F));
-    }
-  }
-
-  std::string parseString()
-  {
-    ++m_pos; // opening quote
-    std::string out;
-    while (true) {
-      if (m_pos >= m_s.size())
-        fail("unterminated string");
-      char c = m_s[m_pos++];
-      if (c == '"')
-        return out;
-      if (static_cast<unsigned char>(c) < 0x20)
-        fail("control character inside a string (a missing closing quote?)");
-      if (c != '\\') {
-        out += c;
-        continue;
+    // A number right after a digit: a leading zero ("01"), which the lexer reads as two numbers.
+    if (got == "number literal") {
+      const size_t at = lastReadBefore(position);
+      size_t start = at;
+      while (start > 0 && std::strchr("0123456789+-.eE", m_text[start - 1]) != nullptr) {
+        --start;
       }
-      if (m_pos >= m_s.size())
-        fail("unterminated string");
-      char e = m_s[m_pos++];
-      switch (e) {
-      case '"':
-        out += '"';
-        break;
-      case '\\':
-        out += '\\';
-        break;
-      case '/':
-        out += '/';
-        break;
-      case 'b':
-        out += '\b';
-        break;
-      case 'f':
-        out += '\f';
-        break;
-      case 'n':
-        out += '\n';
-        break;
-      case 'r':
-        out += '\r';
-        break;
-      case 't':
-        out += '\t';
-        break;
-      case 'u': {
-        unsigned cp = hex4();
-        if (cp >= 0xD800 && cp < 0xDC00 && m_s.compare(m_pos, 2, "\\u") == 0) {
-          m_pos += 2;
-          unsigned lo = hex4();
-          if (lo < 0xDC00 || lo >= 0xE000)
-            fail("bad UTF-16 surrogate pair");
-          cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
-        }
-        appendUtf8(out, cp);
-        break;
-      }
-      default:
-        fail(std::string("bad escape '\\") + e + "' in a string");
+      if (start < at && m_text[start] == '0' && m_text[start + 1] >= '0' && m_text[start + 1] <= '9') {
+        return "malformed number: a leading zero";
       }
     }
+    if (message.find("while parsing object key") != std::string::npos) {
+      return "expected a member name in double quotes, got " + got;
+    }
+    if (message.find("while parsing object separator") != std::string::npos) {
+      return "expected ':' after a member name, got " + got;
+    }
+    if (message.find("while parsing object ") != std::string::npos) {
+      return "expected '}' or ',' after an object member, got " + got;
+    }
+    if (message.find("while parsing array") != std::string::npos) {
+      return "expected ']' or ',' after an array element, got " + got;
+    }
+    if (message.find("; expected end of input") != std::string::npos) {
+      return "unexpected " + got + " after the end of the JSON value";
+    }
+    return "expected a value, got " + got;
   }
 
-  double parseNumber()
-  {
-    // JSON grammar: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
-    size_t start = m_pos;
-    auto digits = [&]() {
-      size_t d = m_pos;
-      while (m_pos < m_s.size() && m_s[m_pos] >= '0' && m_s[m_pos] <= '9')
-        ++m_pos;
-      return m_pos - d;
-    };
-    if (m_s[m_pos] == '-')
-      ++m_pos;
-    size_t intStart = m_pos;
-    size_t n = digits();
-    if (n == 0 || (n > 1 && m_s[intStart] == '0'))
-      fail("malformed number");
-    if (m_pos < m_s.size() && m_s[m_pos] == '.') {
-      ++m_pos;
-      if (digits() == 0)
-        fail("malformed number: no digit after '.'");
-    }
-    if (m_pos < m_s.size() && (m_s[m_pos] == 'e' || m_s[m_pos] == 'E')) {
-      ++m_pos;
-      if (m_pos < m_s.size() && (m_s[m_pos] == '+' || m_s[m_pos] == '-'))
-        ++m_pos;
-      if (digits() == 0)
-        fail("malformed number: no digit in the exponent");
-    }
-    double value = 0.;
-    auto r = std::from_chars(m_s.data() + start, m_s.data() + m_pos, value);
-    if (r.ec != std::errc() || !std::isfinite(value))
-      fail("number out of range: " + m_s.substr(start, m_pos - start));
-    return value;
-  }
-
-  const std::string &m_s;
+  const std::string &m_text;
   std::string m_file;
-  size_t m_pos = 0;
-  int m_line = 1;
+  const char *m_read;
+  int m_depth = 0;
+  size_t m_counted = 0;
+  int m_countedLine = 1;
+  std::vector<std::set<std::string>> m_keys;
 };
-
-const JsonValue *findMember(const JsonValue &object, const std::string &name)
-{
-  for (size_t i = 0; i < object.names.size(); ++i)
-    if (object.names[i] == name)
-      return &object.items[i];
-  return nullptr;
-}
 
 std::string formatNumber(double v)
 {
@@ -300,24 +306,6 @@ std::string formatNumber(double v)
   auto r = std::to_chars(buf, buf + sizeof(buf), v, std::chars_format::general, 9);
   return std::string(buf, r.ptr);
 }
-
-std::string quote(const std::string &s)
-{
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof(buf), "\\u%04x", static_cast<unsigned>(c));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 } // namespace
 
 vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &textIn, const std::string &filename)
@@ -325,50 +313,65 @@ vpSSLSequenceInfo vpSSLSequenceInfo::fromJson(const std::string &textIn, const s
   // A UTF-8 byte order mark (spreadsheets and some editors write one) is skipped, as in frames.csv; the spans
   // kept below ("water") index the text without it.
   const std::string text = textIn.compare(0, 3, "\xEF\xBB\xBF") == 0 ? textIn.substr(3) : textIn;
-  JsonParser parser(text, filename);
-  JsonValue root = parser.parseDocument();
-  if (root.kind != JsonValue::Object)
-    parser.fail("expected a JSON object { \"target\": ..., \"camera_to_vehicle\": [...], \"source\": ... }", root.line);
-
-  auto require = [&](const char *name) -> const JsonValue & {
-    const JsonValue *v = findMember(root, name);
-    if (!v)
-      parser.fail(std::string(name) + ": missing (required)", root.line);
-    return *v;
+  Reader reader(text, filename);
+  reader.parse();
+  if (!reader.rootIsObject) {
+    reader.fail("expected a JSON object { \"target\": ..., \"camera_to_vehicle\": [...], \"source\": ... }",
+                reader.rootLine);
+  }
+  auto find = [&](const char *name) -> const Member * {
+    for (size_t i = 0; i < reader.names.size(); ++i) {
+      if (reader.names[i] == name) {
+        return &reader.members[i];
+      }
+    }
+    return nullptr;
+  };
+  auto require = [&](const char *name) -> const Member & {
+    const Member *m = find(name);
+    if (m == nullptr) {
+      reader.fail(std::string(name) + ": missing (required)", reader.rootLine);
+    }
+    return *m;
   };
 
   vpSSLSequenceInfo info;
-  const JsonValue &target = require("target");
-  if (target.kind != JsonValue::String || target.text.empty())
-    parser.fail("target: expected a target name or a target file path as a non-empty string", target.line);
+  const Member &target = require("target");
+  if (target.kind != Member::String || target.text.empty()) {
+    reader.fail("target: expected a target name or a target file path as a non-empty string", target.line);
+  }
   info.target = target.text;
 
-  const JsonValue &vMc = require("camera_to_vehicle");
-  if (vMc.kind != JsonValue::Array || vMc.items.size() != 6)
-    parser.fail("camera_to_vehicle: expected an array of 6 numbers [tx, ty, tz, tux, tuy, tuz]" +
-                    (vMc.kind == JsonValue::Array ? ", got " + std::to_string(vMc.items.size()) : std::string()),
+  const Member &vMc = require("camera_to_vehicle");
+  if (vMc.kind != Member::Array || vMc.size != 6) {
+    reader.fail("camera_to_vehicle: expected an array of 6 numbers [tx, ty, tz, tux, tuy, tuz]" +
+                    (vMc.kind == Member::Array ? ", got " + std::to_string(vMc.size) : std::string()),
                 vMc.line);
+  }
   for (unsigned int i = 0; i < 6; ++i) {
-    if (vMc.items[i].kind != JsonValue::Number)
-      parser.fail("camera_to_vehicle: element " + std::to_string(i + 1) + " is not a number", vMc.items[i].line);
-    const double bound = i < 3 ? vpSSLInputLimits::maxMountTranslation() : vpSSLInputLimits::maxMountRotation();
-    if (std::fabs(vMc.items[i].number) > bound) {
-      std::ostringstream os;
-      os << "camera_to_vehicle: element " << i + 1 << " is " << vMc.items[i].number << ", beyond +-" << bound
-         << (i < 3 ? " m" : " rad");
-      parser.fail(os.str(), vMc.items[i].line);
+    if (!vMc.isNumber[i]) {
+      reader.fail("camera_to_vehicle: element " + std::to_string(i + 1) + " is not a number", vMc.lines[i]);
     }
-    info.vMc[i] = vMc.items[i].number;
+    const double bound = i < 3 ? vpSSLInputLimits::maxMountTranslation() : vpSSLInputLimits::maxMountRotation();
+    if (std::fabs(vMc.numbers[i]) > bound) {
+      std::ostringstream os;
+      os << "camera_to_vehicle: element " << i + 1 << " is " << vMc.numbers[i] << ", beyond +-" << bound
+         << (i < 3 ? " m" : " rad");
+      reader.fail(os.str(), vMc.lines[i]);
+    }
+    info.vMc[i] = vMc.numbers[i];
   }
 
-  const JsonValue &source = require("source");
-  if (source.kind != JsonValue::String || (source.text != "simulated" && source.text != "recorded"))
-    parser.fail("source: expected \"simulated\" or \"recorded\"", source.line);
+  const Member &source = require("source");
+  if (source.kind != Member::String || (source.text != "simulated" && source.text != "recorded")) {
+    reader.fail("source: expected \"simulated\" or \"recorded\"", source.line);
+  }
   info.source = source.text;
 
-  if (const JsonValue *water = findMember(root, "water")) {
-    if (water->kind != JsonValue::Object)
-      parser.fail("water: expected a JSON object { ... }", water->line);
+  if (const Member *water = find("water")) {
+    if (water->kind != Member::Object) {
+      reader.fail("water: expected a JSON object { ... }", water->line);
+    }
     info.water = text.substr(water->begin, water->end - water->begin);
   }
   return info;
@@ -401,18 +404,27 @@ std::string vpSSLSequenceInfo::toJson() const
   if (source != "simulated" && source != "recorded")
     throw vpException(vpException::badValue,
                       "sequence info: source is \"" + source + "\", expected \"simulated\" or \"recorded\"");
-  std::string json = "{\n  \"target\": " + quote(target) + ",\n  \"camera_to_vehicle\": [";
+  // The layout (one member a line, the pose on one line, "water" verbatim) is the format's, not nlohmann's
+  // dump(): nlohmann quotes the strings and checks "water".
+  std::string targetJson;
+  try {
+    targetJson = Json(target).dump();
+  } catch (const Json::exception &) {
+    throw vpException(vpException::badValue, "sequence info: target is not valid UTF-8");
+  }
+  std::string json = "{\n  \"target\": " + targetJson + ",\n  \"camera_to_vehicle\": [";
   for (unsigned int i = 0; i < 6; ++i) {
     if (!std::isfinite(vMc[i]))
       throw vpException(vpException::badValue, "sequence info: camera_to_vehicle has a non-finite value");
     json += (i ? ", " : "") + formatNumber(vMc[i]);
   }
-  json += "],\n  \"source\": " + quote(source);
+  json += "],\n  \"source\": " + Json(source).dump();
   if (!water.empty()) {
     try {
-      JsonValue w = JsonParser(water, "water").parseDocument();
-      if (w.kind != JsonValue::Object)
-        throw vpException(vpException::badValue, "water:1: expected a JSON object { ... }");
+      Reader check(water, "water");
+      check.parse();
+      if (!check.rootIsObject)
+        check.fail("expected a JSON object { ... }", check.rootLine);
     } catch (const vpException &e) {
       throw vpException(vpException::badValue,
                         "sequence info: water is not a valid JSON object: " + e.getStringMessage());
