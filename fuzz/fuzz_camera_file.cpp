@@ -1,10 +1,11 @@
 // libFuzzer target: the camera-file reader (vpSSLCameraFile::load over ViSP's vpXmlParserCamera). Any input
-// gives intrinsics within vpSSLCameraFile::check()'s bounds and a size within vpSSLImageIo's, or a vpException.
+// gives intrinsics within vpSSLInputLimits::checkCamera()'s bounds and a size within vpSSLImageIo's, or a vpException.
 #include <cmath>
 
 #include <visp3/core/vpException.h>
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 #include "fuzz_common.h"
 
@@ -19,10 +20,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   } catch (const vpException &) {
     return 0;
   }
-  if (!std::isfinite(cam.get_px()) || !(cam.get_px() >= vpSSLCameraFile::minFocal()) || !std::isfinite(cam.get_u0())) {
+  if (!std::isfinite(cam.get_px()) || !(cam.get_px() >= vpSSLInputLimits::minFocal()) || !std::isfinite(cam.get_u0())) {
     std::abort();
   }
-  if ((w == 0) != (h == 0) || w > vpSSLImageIo::maxImageSide() || h > vpSSLImageIo::maxImageSide()) {
+  if ((w == 0) != (h == 0) || w > vpSSLInputLimits::maxImageSide() || h > vpSSLInputLimits::maxImageSide()) {
     std::abort();
   }
   return 0;

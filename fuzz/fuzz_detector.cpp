@@ -11,14 +11,16 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 #include "fuzz_common.h"
 
 namespace {
 void detect(vpSSLDetector &detector, const vpImage<unsigned char> &I)
 {
-  // vpSSLDetector::detect() checks its image with vpSSLImageIo::check() (a wrapped vpImage size is refused there).
-  vpSSLImageIo::check(I, "fuzz");
+  // vpSSLDetector::detect() checks its image with vpSSLInputLimits::checkImage() (a wrapped vpImage size is refused
+  // there).
+  vpSSLInputLimits::checkImage(I, "fuzz");
   detector.detect(I);
   for (const vpSSLLandmark &l : detector.getLandmarks()) {
     if (!std::isfinite(l.u) || !std::isfinite(l.v) || !std::isfinite(l.radius) || l.u < -1. || l.v < -1. ||

@@ -7,7 +7,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
@@ -49,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     vpSSLSequenceFrame f;
     vpImage<unsigned char> I;
     for (int n = 0; n < 4 && reader.next(f, I); ++n) {
-      vpSSLImageIo::check(I, "frame"); // the reader gives only images within the limits
+      vpSSLInputLimits::checkImage(I, "frame"); // the reader gives only images within the limits
     }
   } catch (const vpException &) {
   }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include <visp3/core/vpException.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLSequenceInfo.h>
 
 #include "fuzz_common.h"
@@ -18,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     return 0;
   }
   for (unsigned int i = 0; i < 6; ++i) {
-    if (!std::isfinite(info.vMc[i]) || std::fabs(info.vMc[i]) > vpSSLSequenceInfo::maxMountTranslation()) {
+    if (!std::isfinite(info.vMc[i]) || std::fabs(info.vMc[i]) > vpSSLInputLimits::maxMountTranslation()) {
       std::abort();
     }
   }

@@ -22,6 +22,8 @@ packages=(
   libopencv-contrib-dev
   # SIMD matching function (Highway), target generator (cairo), linear algebra used with ViSP.
   libhwy-dev libcairo2-dev libeigen3-dev
+  # sequence.json and the tutorials' JSON output (nlohmann::ordered_json, header-only, never in an installed header).
+  nlohmann-json3-dev
   # ROS 1 bags (modules/rosbag, optional at build time, built and tested in CI).
   librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libgeometry-msgs-dev libcv-bridge-dev
   # Tests and benchmarks; visp-images-data holds the real photographs the false-positive tests use.

@@ -18,6 +18,7 @@
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPeakDetector.h>
 #include <visp3/ssl/vpSSLSequenceInfo.h>
@@ -95,7 +96,7 @@ TEST(HostileImage, WrappedSizeIsRejectedByEveryEntryPoint)
 {
   const vpImage<unsigned char> I = wrappedImage();
   ASSERT_EQ(I.getSize(), 65536u); // the wrap this guards against
-  EXPECT_HAS(errorOf([&] { vpSSLImageIo::check(I, "I"); }), "I: 65537 x 65536 pixels");
+  EXPECT_HAS(errorOf([&] { vpSSLInputLimits::checkImage(I, "I"); }), "I: 65537 x 65536 pixels");
   unsigned char lut[256];
   EXPECT_HAS(errorOf([&] { vpSSLBrightnessNormalizer().computeLut(I, lut, 4); }),
              "vpSSLBrightnessNormalizer::computeLut: 65537 x 65536 pixels");
@@ -141,11 +142,11 @@ TEST(HostileImage, KernelsStateAndCheckTheirBound)
 
 TEST(HostileImage, SizeLimitsAreStatedInTheMessage)
 {
-  EXPECT_HAS(errorOf([] { vpSSLImageIo::checkSize(20000, 20000, "x"); }), "exceeds the limit of 16384");
-  EXPECT_HAS(errorOf([] { vpSSLImageIo::checkSize(16384, 16384, "x"); }), "exceed the limit of 67108864");
-  EXPECT_HAS(errorOf([] { vpSSLImageIo::checkSize(0, 5, "x"); }), "empty image");
-  EXPECT_NO_THROW(vpSSLImageIo::checkSize(16384, 4096, "x"));
-  EXPECT_NO_THROW(vpSSLImageIo::checkSize(1, 1, "x"));
+  EXPECT_HAS(errorOf([] { vpSSLInputLimits::checkImageSize(20000, 20000, "x"); }), "exceeds the limit of 16384");
+  EXPECT_HAS(errorOf([] { vpSSLInputLimits::checkImageSize(16384, 16384, "x"); }), "exceed the limit of 67108864");
+  EXPECT_HAS(errorOf([] { vpSSLInputLimits::checkImageSize(0, 5, "x"); }), "empty image");
+  EXPECT_NO_THROW(vpSSLInputLimits::checkImageSize(16384, 4096, "x"));
+  EXPECT_NO_THROW(vpSSLInputLimits::checkImageSize(1, 1, "x"));
 }
 
 TEST_F(Hostile, PnmHeaderBeyondTheLimitsIsRejectedBeforeDecoding)

@@ -13,6 +13,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPoseVector.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLSequenceInfo.h>
 
 #include "ssl_tutorial_common.h"
@@ -43,8 +44,8 @@ inline vpPoseVector parseMount(const std::string &name, const std::string &text)
   vpPoseVector vMc;
   for (unsigned int i = 0; i < 6; ++i) {
     vMc[i] = parseNumber(name, words[i],
-                         i < 3 ? -vpSSLSequenceInfo::maxMountTranslation() : -vpSSLSequenceInfo::maxMountRotation(),
-                         i < 3 ? vpSSLSequenceInfo::maxMountTranslation() : vpSSLSequenceInfo::maxMountRotation());
+                         i < 3 ? -vpSSLInputLimits::maxMountTranslation() : -vpSSLInputLimits::maxMountRotation(),
+                         i < 3 ? vpSSLInputLimits::maxMountTranslation() : vpSSLInputLimits::maxMountRotation());
   }
   return vMc;
 }

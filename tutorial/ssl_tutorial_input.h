@@ -23,6 +23,7 @@
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
 #include "ssl_tutorial_common.h"
@@ -88,7 +89,7 @@ inline bool isVideoFile(const std::string &path)
   pixel formats than vpV4l2Grabber, e.g. MJPG) through cv::VideoCapture. Every failure is a vpException naming the
   source and, for a file, the frame: a source that cannot be opened, no frame at all, a video that ends two frames or
   more before the number its header announces (truncated, or a frame that cannot be decoded), a frame beyond the limits
-  of vpSSLImageIo::check().
+  of vpSSLInputLimits::checkImage().
 */
 class VideoInput
 {
@@ -158,7 +159,8 @@ public:
       }
       return false;
     }
-    vpSSLImageIo::checkSize(static_cast<uint64_t>(m_frame.cols), static_cast<uint64_t>(m_frame.rows), m_source);
+    vpSSLInputLimits::checkImageSize(static_cast<uint64_t>(m_frame.cols), static_cast<uint64_t>(m_frame.rows),
+                                     m_source);
     vpImageConvert::convert(m_frame, I);
     ++m_index;
     return true;

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpImageDraw.h>
 #include <visp3/core/vpIoTools.h>
@@ -15,6 +17,7 @@
 #include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 
 #include "ssl_tutorial_common.h"
@@ -67,31 +70,11 @@ output folder. Every error is one line on stderr.
 
 const char *kProgram = "tutorial-ssl-detector";
 
+// A JSON string literal; bytes that are not UTF-8 (a file name in another encoding) become U+FFFD, so that every
+// line stays valid JSON.
 std::string jsonString(const std::string &s)
 {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-    case '"':
-      out += "\\\"";
-      break;
-    case '\\':
-      out += "\\\\";
-      break;
-    case '\n':
-      out += "\\n";
-      break;
-    default:
-      if (static_cast<unsigned char>(c) < 0x20) {
-        char buf[8];
-        std::snprintf(buf, sizeof(buf), "\\u%04x", c);
-        out += buf;
-      } else {
-        out += c;
-      }
-    }
-  }
-  return out + "\"";
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string num(double x, int digits)
@@ -379,7 +362,7 @@ int run(int argc, char **argv)
         name = vpIoTools::getName(path);
         vpSSLImageIo::read(I, path);
       }
-      vpSSLImageIo::check(I, name.c_str());
+      vpSSLInputLimits::checkImage(I, name.c_str());
     } catch (const vpException &e) {
       std::cerr << "tutorial-ssl-detector: " << e.getStringMessage() << std::endl;
       if (json) {

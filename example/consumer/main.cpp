@@ -1,10 +1,11 @@
-// Smallest program using the installed plugin: proves that the headers, the library and its dependencies
-// (ViSP, OpenCV, Highway) are all found through find_package(VISP_SSL).
+// Smallest program using the installed plugin: proves that the headers, the libraries visp_ssl and visp_ssl_io
+// and their dependencies (ViSP, OpenCV, Highway) are all found through find_package(VISP_SSL).
 #include <cstdlib>
 #include <iostream>
 
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
+#include <visp3/ssl/vpSSLSequenceInfo.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
 int main()
@@ -19,11 +20,16 @@ int main()
     match.compute(I, M);
     const int maxValue = M.getMaxValue();
 
+    // visp_ssl_io: a sequence.json written and read back.
+    vpSSLSequenceInfo info;
+    info.target = target.getName();
+    const vpSSLSequenceInfo back = vpSSLSequenceInfo::fromJson(info.toJson());
+
     std::cout << "visp-ssl consumer: target " << target.getName() << " with " << target.size()
               << " landmarks, matching window " << match.getWindow() << " (SIMD "
               << vpSSLMatchingFunction::getSimdTarget() << "), max of the map on a uniform image: " << maxValue
-              << std::endl;
-    return maxValue == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+              << ", sequence.json target " << back.target << std::endl;
+    return maxValue == 0 && back.target == info.target ? EXIT_SUCCESS : EXIT_FAILURE;
   } catch (const vpException &e) {
     std::cerr << "visp-ssl consumer: " << e.getMessage() << std::endl;
     return EXIT_FAILURE;

@@ -19,7 +19,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpQuaternionVector.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 namespace {
 const char *const kImage = "sensor_msgs/Image";
@@ -209,7 +209,7 @@ void vpSSLRosbagReader::selectTopics(const std::string &imageTopic, const std::s
                                                      "image topic and its CameraInfo with D = 0");
     }
     vpCameraParameters cam(info->K[0], info->K[4], info->K[2], info->K[5]);
-    vpSSLCameraFile::check(cam, d.where(cameraInfoTopic) + "K");
+    vpSSLInputLimits::checkCamera(cam, d.where(cameraInfoTopic) + "K");
     m_cam = cam;
     m_width = d.width = info->width;
     m_height = d.height = info->height;

@@ -8,7 +8,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 #include "vpSSLLookupKernel.h"
 #include "vpSSLResampleKernel.h"
@@ -163,7 +163,7 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I)
   }
   // Width and height consistent with the buffer (in 64 bits) and within the documented limits: nothing is read
   // past a buffer whose declared size wraps.
-  vpSSLImageIo::check(I, "vpSSLDetector::detect");
+  vpSSLInputLimits::checkImage(I, "vpSSLDetector::detect");
 
   // The rings are read on the camera's grey levels: the stretch that helps the matching function can
   // clip a dark background to the ink's black, and the outermost ring is told from the background by

@@ -13,8 +13,7 @@
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/core/vpThetaUVector.h>
 
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 #include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLPointTransform.h>
@@ -35,11 +34,11 @@ vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &
     throw vpException(vpException::badValue, "vpSSLTracker: the camera needs positive px and py");
   }
   // Infinite or absurd intrinsics (px = 1e300, u0 = NaN) would give NaN projections, regions and poses.
-  vpSSLCameraFile::check(cam, "vpSSLTracker: camera");
+  vpSSLInputLimits::checkCamera(cam, "vpSSLTracker: camera");
   if (!vpSSLFinite::isFinite(vMc)) {
     throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle) is not finite");
   }
-  const double t = vpSSLSequenceInfo::maxMountTranslation();
+  const double t = vpSSLInputLimits::maxMountTranslation();
   if (std::fabs(vMc[0][3]) > t || std::fabs(vMc[1][3]) > t || std::fabs(vMc[2][3]) > t) {
     throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle): translation beyond +-%g m", t);
   }

@@ -73,7 +73,7 @@ public:
     Detects the landmarks and identifies the target in \e I.
     \return true if at least one landmark was found.
     \exception vpException on an empty image, or one whose size does not match its buffer or exceeds the limits
-    of vpSSLImageIo::check() (16384 px a side, 2^26 pixels).
+    of vpSSLInputLimits::checkImage() (16384 px a side, 2^26 pixels).
   */
   bool detect(const vpImage<unsigned char> &I) override;
 

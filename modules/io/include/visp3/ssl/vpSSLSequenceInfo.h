@@ -12,7 +12,7 @@
 
 /*!
   \struct vpSSLSequenceInfo
-  \ingroup group_ssl
+  \ingroup group_ssl_io
   \brief The content of a sequence's sequence.json (doc/sequence-format.md):
 
   \code{.json}
@@ -29,7 +29,8 @@
   at the start is skipped (as in frames.csv).
 
   Limits (doc/input-limits.md): the file is at most maxFileSize() bytes; \c camera_to_vehicle's translation
-  within +-maxMountTranslation() m and its theta-u rotation within +-maxMountRotation() rad per element.
+  within +-vpSSLInputLimits::maxMountTranslation() m and its theta-u rotation within
+  +-vpSSLInputLimits::maxMountRotation() rad per element.
 
   \code
   vpSSLSequenceInfo info;
@@ -58,10 +59,6 @@ struct VISP_SSL_EXPORT vpSSLSequenceInfo
 
   //! Largest sequence.json file read (bytes): 1 MiB.
   static constexpr size_t maxFileSize() { return size_t(1) << 20; }
-  //! Largest |tx|, |ty|, |tz| of camera_to_vehicle (m): 100.
-  static constexpr double maxMountTranslation() { return 100.; }
-  //! Largest |tux|, |tuy|, |tuz| of camera_to_vehicle (rad): 2 pi.
-  static constexpr double maxMountRotation() { return 6.283185307179586; }
 
   /*!
     Reads a sequence.json file.

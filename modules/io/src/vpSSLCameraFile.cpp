@@ -10,7 +10,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpXmlParserCamera.h>
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 namespace {
 std::string trim(const std::string &s)
@@ -78,31 +78,32 @@ std::string intrinsicProblem(const std::string &text, size_t camera)
   }
   return std::string();
 }
-} // namespace
 
-void vpSSLCameraFile::check(const vpCameraParameters &cam, const std::string &what)
+// vpXmlParserCamera::parse() with its standard output discarded. ViSP 3.5's parser writes "Found camera with
+// name: ..." on std::cout for every <name> it reads, whatever the file holds, so no check made beforehand can
+// keep it quiet; and the tutorials keep standard output for JSON. Neither OpenCV (cv::FileStorage wants an
+// <opencv_storage> root) nor ViSP offer another reader of this format, and a second pugixml would clash with the
+// copy libvisp_core exports.
+// This is the one place of the plugin that touches a global stream: std::cout's buffer is swapped for the
+// duration of the call and restored on every path, including exceptions. Another thread writing to std::cout
+// meanwhile would lose its output, which is why load() says it is not to be called concurrently with output on
+// std::cout.
+int parseQuietly(vpXmlParserCamera &parser, vpCameraParameters &cam, const std::string &filename,
+                 const std::string &name, vpCameraParameters::vpCameraParametersProjType model)
 {
-  struct Value
+  struct CoutSilencer
   {
-    const char *name;
-    double value, low, high;
-  };
-  const double m = maxFocal();
-  const Value values[] = {{"px", cam.get_px(), minFocal(), m},
-                          {"py", cam.get_py(), minFocal(), m},
-                          {"u0", cam.get_u0(), -m, m},
-                          {"v0", cam.get_v0(), -m, m},
-                          {"kud", cam.get_kud(), -maxDistortion(), maxDistortion()},
-                          {"kdu", cam.get_kdu(), -maxDistortion(), maxDistortion()}};
-  for (const Value &v : values) {
-    if (!std::isfinite(v.value) || v.value < v.low || v.value > v.high) {
-      std::ostringstream os;
-      os << what << ": " << v.name << ": must be a finite number in [" << v.low << ", " << v.high << "], got "
-         << v.value;
-      throw vpException(vpException::badValue, os.str());
-    }
+    std::ostringstream sink;
+    std::streambuf *saved = std::cout.rdbuf(sink.rdbuf());
+    ~CoutSilencer() { std::cout.rdbuf(saved); }
+  } silencer;
+  try {
+    return parser.parse(cam, filename, name, model);
+  } catch (...) {
+    return vpXmlParserCamera::SEQUENCE_ERROR;
   }
 }
+} // namespace
 
 vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std::string &name, unsigned int *width,
                                          unsigned int *height)
@@ -120,21 +121,12 @@ vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std:
   for (auto model : models) {
     vpXmlParserCamera parser;
     vpCameraParameters cam;
-    // vpXmlParserCamera prints "Found camera ..." on std::cout, which would corrupt a tool's JSON output.
-    std::ostringstream sink;
-    std::streambuf *coutBuf = std::cout.rdbuf(sink.rdbuf());
-    int status = vpXmlParserCamera::SEQUENCE_ERROR;
-    try {
-      status = parser.parse(cam, filename, name, model);
-    } catch (...) {
-      status = vpXmlParserCamera::SEQUENCE_ERROR;
-    }
-    std::cout.rdbuf(coutBuf);
+    const int status = parseQuietly(parser, cam, filename, name, model);
     if (status != vpXmlParserCamera::SEQUENCE_OK) {
       continue;
     }
     const std::string where = filename + ": camera \"" + name + "\"";
-    check(cam, where);
+    vpSSLInputLimits::checkCamera(cam, where);
     // vpXmlParserCamera gives 0 for a size the file does not state; a stated 0 is an error, and so is one
     // side without the other.
     const unsigned int w = parser.getWidth(), h = parser.getHeight();
@@ -155,7 +147,7 @@ vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std:
     }
     if (w != 0) {
       try {
-        vpSSLImageIo::checkSize(w, h, where + ": image_width x image_height");
+        vpSSLInputLimits::checkImageSize(w, h, where + ": image_width x image_height");
       } catch (const vpException &e) {
         throw vpException(vpException::badValue, e.getStringMessage());
       }

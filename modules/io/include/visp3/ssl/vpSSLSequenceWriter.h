@@ -18,7 +18,7 @@
 
 /*!
   \class vpSSLSequenceWriter
-  \ingroup group_ssl
+  \ingroup group_ssl_io
   \brief Writes a recorded sequence folder (doc/sequence-format.md) one frame at a time: what the
   simulator writes and what a user records on a vehicle, read back by vpSSLSequenceReader.
 

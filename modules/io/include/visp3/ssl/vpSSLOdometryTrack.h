@@ -15,7 +15,7 @@
 
 /*!
   \class vpSSLOdometryTrack
-  \ingroup group_ssl
+  \ingroup group_ssl_io
   \brief The vehicle poses \c oMv of a recording's odometry, at their own times, interpolated to the times of the
   images (doc/recordings.md).
 

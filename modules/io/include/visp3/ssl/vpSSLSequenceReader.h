@@ -17,8 +17,16 @@
 #include <visp3/ssl/vpSSLSequenceInfo.h>
 
 /*!
+  \defgroup group_ssl_io Files
+  Library visp_ssl_io: recorded sequences read and written (vpSSLSequenceReader, vpSSLSequenceWriter), camera
+  files (vpSSLCameraFile), odometry tracks (vpSSLOdometryTrack) and image files read with their size checked
+  before decoding (vpSSLImageIo). The bounds it checks are visp_ssl's (vpSSLInputLimits). See
+  doc/sequence-format.md.
+*/
+
+/*!
   \class vpSSLSequenceReader
-  \ingroup group_ssl
+  \ingroup group_ssl_io
   \brief Reads a recorded sequence folder (doc/sequence-format.md) one frame at a time.
 
   open() reads camera.xml (camera "Camera" with the projection model found in the file, the model with

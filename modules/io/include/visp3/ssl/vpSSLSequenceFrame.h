@@ -13,7 +13,7 @@
 
 /*!
   \struct vpSSLSequenceFrame
-  \ingroup group_ssl
+  \ingroup group_ssl_io
   \brief One frame of a recorded sequence: a row of frames.csv (doc/sequence-format.md).
 
   Odometry and ground truth are optional: a recording without odometry, or a frame where the truth is

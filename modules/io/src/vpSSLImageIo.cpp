@@ -1,6 +1,6 @@
 /*!
   \file vpSSLImageIo.cpp
-  \brief Image size limits, header sizes of PNG, JPEG, PNM and BMP files, and decoding through OpenCV.
+  \brief Header sizes of PNG, JPEG, PNM and BMP files, and decoding through OpenCV.
 */
 #include <visp3/ssl/vpSSLImageIo.h>
 
@@ -16,8 +16,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
-
-#include "vpSSLImageCheck.h"
+#include <visp3/ssl/vpSSLInputLimits.h>
 
 namespace {
 [[noreturn]] void fail(const std::string &file, const std::string &problem)
@@ -184,7 +183,7 @@ template <typename Type> void readImage(vpImage<Type> &I, const std::string &fil
 {
   uint64_t width = 0, height = 0;
   const std::string format = vpSSLImageIo::readHeader(filename, width, height);
-  vpSSLImageIo::checkSize(width, height, filename + ": " + format + " header");
+  vpSSLInputLimits::checkImageSize(width, height, filename + ": " + format + " header");
   if (format == "PNG") {
     std::ifstream in(filename, std::ios::binary);
     in.seekg(0, std::ios::end);
@@ -216,30 +215,9 @@ template <typename Type> void readImage(vpImage<Type> &I, const std::string &fil
     fail(filename, format + " data with " + std::to_string(m.channels()) + " channels (1, 3 or 4)");
   }
   vpImageConvert::convert(m, I);
-  vpSSLImageCheck::input(I, filename.c_str());
+  vpSSLInputLimits::checkImage(I, filename.c_str());
 }
 } // namespace
-
-void vpSSLImageIo::checkSize(uint64_t width, uint64_t height, const std::string &what)
-{
-  std::ostringstream os;
-  os << what << ": " << width << " x " << height << " pixels";
-  if (width == 0 || height == 0) {
-    os << ": empty image";
-  } else if (width > maxImageSide() || height > maxImageSide()) {
-    os << ": a side exceeds the limit of " << maxImageSide() << " pixels";
-  } else if (width * height > maxImagePixels()) {
-    os << ": " << width * height << " pixels exceed the limit of " << maxImagePixels();
-  } else {
-    return;
-  }
-  throw vpException(vpException::dimensionError, os.str());
-}
-
-void vpSSLImageIo::check(const vpImage<unsigned char> &I, const char *what)
-{
-  vpSSLImageCheck::input(I, what);
-}
 
 std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &width, uint64_t &height)
 {
@@ -273,7 +251,7 @@ std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &widt
     uint64_t maxval = 1;
     const uint64_t data = pnmHeader(in, filename, kind, width, height, maxval);
     const std::string format = (kind == '1' || kind == '4') ? "PBM" : (kind == '2' || kind == '5') ? "PGM" : "PPM";
-    if (kind >= '4' && width <= maxImageSide() && height <= maxImageSide()) {
+    if (kind >= '4' && width <= vpSSLInputLimits::maxImageSide() && height <= vpSSLInputLimits::maxImageSide()) {
       // Binary data: its length is known, so a truncated file is told as such rather than as "corrupt".
       const uint64_t channels = kind == '6' ? 3 : 1, bytes = maxval > 255 ? 2 : 1;
       const uint64_t expected = kind == '4' ? (width + 7) / 8 * height : width * height * channels * bytes;

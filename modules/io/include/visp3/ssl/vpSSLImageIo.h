@@ -1,0 +1,54 @@
+/*!
+  \file vpSSLImageIo.h
+  \brief Reading an image file that checks its size against the plugin's limits before decoding.
+*/
+#ifndef VP_SSL_IMAGE_IO_H
+#define VP_SSL_IMAGE_IO_H
+
+#include <cstdint>
+#include <string>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRGBa.h>
+#include <visp3/ssl/vpSSLConfig.h>
+
+/*!
+  \class vpSSLImageIo
+  \ingroup group_ssl_io
+  \brief An image file reader that never lets a hostile file reach an unchecked decoder.
+
+  read() reads the size from the file's header (PNG, JPEG, PGM/PPM/PBM, BMP) and checks it against
+  vpSSLInputLimits before any pixel is decoded; it then decodes through OpenCV, whose decoders fail cleanly on
+  truncated or corrupt data (ViSP 3.5's PNG reader leaks on them, and trusts the header's size). A 16-bit image
+  is scaled to 8 bits (value / 257, rounded).
+
+  \code
+  vpImage<unsigned char> I;
+  vpSSLImageIo::read(I, "image.png");  // vpException: "image.png: PNG header: 20000 x 20000 pixels, ..."
+  \endcode
+*/
+class VISP_SSL_EXPORT vpSSLImageIo
+{
+public:
+  /*!
+    Reads a grey image (colour files are converted with ViSP's grey conversion).
+    \exception vpException (ioError) naming the file and the problem: missing, unknown format, header size
+    beyond the limits, truncated or corrupt data.
+  */
+  static void read(vpImage<unsigned char> &I, const std::string &filename);
+
+  //! As read(vpImage<unsigned char> &, const std::string &), in colour.
+  static void read(vpImage<vpRGBa> &I, const std::string &filename);
+
+  /*!
+    The size a file's header declares, without decoding it.
+    \param filename : a PNG, JPEG, PNM (P1-P6) or BMP file.
+    \param width, height : the size.
+    \return the format's name ("PNG", "JPEG", "PGM", ...).
+    \exception vpException (ioError) when the file cannot be read, its format is not one of these, its header
+    is malformed or, for a binary PNM, the pixel data are shorter than the header says.
+  */
+  static std::string readHeader(const std::string &filename, uint64_t &width, uint64_t &height);
+};
+
+#endif
