@@ -75,6 +75,7 @@ public:
   vpSSLDetector &operator=(const vpSSLDetector &other);
   //! Move: \e other is left without state and must not be used but to be destroyed or assigned to.
   vpSSLDetector &operator=(vpSSLDetector &&other) noexcept;
+  //! Releases the detector and its working storage.
   ~vpSSLDetector() override;
 
   /*!
