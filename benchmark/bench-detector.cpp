@@ -16,7 +16,8 @@
     twice, or matched at full resolution) is counted and printed beside the row;
   - the paper's ROI mode: no previous landmark (forgotten before each timed frame, untimed), so every region is
     matched and searched for peaks, at the detector's resolution.
-  The periodic full search of the tracking mode is off in these rows (it is the full-frame row).
+  Every timed frame of these rows is searched in its regions: the periodic full search of vpSSLTracker is the
+  full-frame row.
 
     ./bench-detector --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
@@ -49,6 +50,8 @@
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLWaterModel.h>
+
+#include "vpSSLDetectorTestAccess.h"
 
 namespace {
 // The board 1 m in front of the camera, turned by a few degrees about each axis, and on it the ssl3-a3 target to
@@ -234,13 +237,13 @@ void BM_SSL(benchmark::State &state)
   }
   std::string detectorName = "SSL full frame", note;
   if (mode != FULL_FRAME) {
-    detector.setFullSearchPeriod(0);
     detector.setRegionsOfInterest(mode == FAST_OFF ? f.off : f.rois);
     if (mode == PAPER_ROI) {
       detector.detect(f.blank);
     }
     detector.detect(f.I);
-    const size_t matched = detector.getMatchedRegions().size(), map = detector.getMapRegions().size();
+    const size_t matched = vpSSLDetectorTestAccess::getMatchedRegions(detector).size();
+    const size_t map = vpSSLDetectorTestAccess::getMapRegions(detector).size();
     const size_t reread = f.rois.size() - matched;
     const size_t decimated = decimation == 2 ? matched : matched - map, full = decimation == 2 ? 0 : map;
     if (!detector.getTargetMatch().found || (mode == PAPER_ROI && matched != f.rois.size())) {

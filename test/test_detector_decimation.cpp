@@ -96,7 +96,6 @@ TEST(DetectorDecimation, TrackedReReadingKeepsTheAccuracy)
     vpSSLDetector detector;
     detector.setDecimation(decimation);
     detector.setNbThreads(1);
-    detector.setFullSearchPeriod(0);
     for (int frame = 0; frame < 8; ++frame) {
       const Scene s = render(1.0 + 0.02 * frame, 10., -8., 5. + frame, 0.004 * frame);
       ASSERT_TRUE(detector.detect(s.I)) << "frame " << frame;
@@ -138,14 +137,21 @@ TEST(DetectorDecimation, NoHeapAllocationInSteadyState)
     vpSSLDetector detector;
     detector.setDecimation(2);
     detector.setNbThreads(1);
-    if (mode == 1) {
-      detector.setFullSearchPeriod(3);
-      detector.setRegionsOfInterest(rois);
-    }
+    // In ROI mode, every third call searches the whole image, as a tracker with a full-search period of 3 asks.
+    int call = 0;
+    const std::vector<vpRect> none;
+    auto nextRegions = [&]() {
+      ++call;
+      if (mode == 1) {
+        detector.setRegionsOfInterest(call % 3 == 0 ? none : rois);
+      }
+    };
     for (int k = 0; k < 4; ++k) {
+      nextRegions();
       ASSERT_TRUE(detector.detect(s.I));
     }
     for (int k = 0; k < 3; ++k) {
+      nextRegions();
       long n = 0;
       {
         const sslt::AllocationCounter counter;

@@ -1,13 +1,13 @@
 /*
   Tracking mode of the detector (paper Sec. 4.1): matching only in regions of interest around the
-  predicted landmarks gives the same landmarks as the full frame, a full-image search still runs every n-th
-  frame (default 10, as in the paper) so that a landmark outside the regions is found again, and detect()
-  itself allocates nothing on the heap once its buffers have grown (only the target identifier's result,
-  counted separately, does).
+  predicted landmarks gives the same landmarks as the full frame, the whole image is searched exactly when no
+  region is given (vpSSLTracker decides which frames), a copy tracks as the original, and detect() itself
+  allocates nothing on the heap once its buffers have grown (only the target identifier's result, counted
+  separately, does).
 */
 
 #include <cstdlib>
-
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -19,6 +19,7 @@
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
 
 #include "allocation_counter.h"
+#include "vpSSLDetectorTestAccess.h"
 
 namespace {
 // ssl3-a3 1 m away, turned by a few degrees (the view of bench-detector), through a 56-degree 640x480 camera.
@@ -87,7 +88,6 @@ TEST(DetectorRoi, RoisGiveTheFullFrameLandmarksInsideThem)
   }
   vpSSLDetector tracked;
   tracked.setNbThreads(1);
-  tracked.setFullSearchPeriod(0);
   tracked.setRegionsOfInterest(rois);
   ASSERT_TRUE(tracked.detect(v.I));
   EXPECT_FALSE(tracked.getLastSearchWasFull());
@@ -124,42 +124,70 @@ TEST(DetectorRoi, RoisGiveTheFullFrameLandmarksInsideThem)
   }
 }
 
-TEST(DetectorRoi, EveryNthFrameSearchesTheWholeImageAsInSec41)
+TEST(DetectorRoi, SearchesTheWholeImageOnlyWithoutRegions)
 {
   const View &v = view();
   vpSSLDetector detector;
   detector.setNbThreads(1);
-  EXPECT_EQ(detector.getFullSearchPeriod(), 10u); // the paper's period
   ASSERT_TRUE(detector.detect(v.I));
   EXPECT_TRUE(detector.getLastSearchWasFull()); // no regions: always the whole image
-
-  // One region, around the first landmark only: the two others are outside it.
-  const unsigned int period = 4;
-  detector.setFullSearchPeriod(period);
-  detector.setRegionsOfInterest({roiAround(v.centres[0])});
-  for (unsigned int call = 1; call <= 3 * period; ++call) {
-    // A tracker moves its regions every frame; that must not restart the period.
-    detector.setRegionsOfInterest({roiAround(v.centres[0])});
-    ASSERT_TRUE(detector.detect(v.I)) << "call " << call;
-    const bool full = call % period == 0;
-    EXPECT_EQ(detector.getLastSearchWasFull(), full) << "call " << call;
-    EXPECT_EQ(nbFound(detector, v.centres), full ? 3u : 1u) << "call " << call;
-    EXPECT_EQ(detector.getLandmarks().size(), full ? 3u : 1u) << "call " << call;
-  }
-
-  detector.setFullSearchPeriod(1);
-  detector.detect(v.I);
-  EXPECT_TRUE(detector.getLastSearchWasFull());
   EXPECT_EQ(nbFound(detector, v.centres), 3u);
-  detector.setFullSearchPeriod(0);
+
+  // One region, around the first landmark only: the two others are outside it, at every call (the tracker, not the
+  // detector, decides which frames search the whole image).
+  detector.setRegionsOfInterest({roiAround(v.centres[0])});
   for (int call = 0; call < 12; ++call) {
-    detector.detect(v.I);
-    EXPECT_FALSE(detector.getLastSearchWasFull());
-    EXPECT_EQ(nbFound(detector, v.centres), 1u);
+    ASSERT_TRUE(detector.detect(v.I)) << "call " << call;
+    EXPECT_FALSE(detector.getLastSearchWasFull()) << "call " << call;
+    EXPECT_EQ(nbFound(detector, v.centres), 1u) << "call " << call;
+    EXPECT_EQ(detector.getLandmarks().size(), 1u) << "call " << call;
   }
   detector.setRegionsOfInterest({});
   detector.detect(v.I);
   EXPECT_TRUE(detector.getLastSearchWasFull());
+  EXPECT_EQ(nbFound(detector, v.centres), 3u);
+}
+
+TEST(DetectorRoi, CopyKeepsTheSettingsAndTheTrackingState)
+{
+  const View &v = view();
+  std::vector<vpRect> rois;
+  for (const vpImagePoint &c : v.centres) {
+    rois.push_back(roiAround(c));
+  }
+  vpSSLDetector original;
+  original.setNbThreads(1);
+  original.setThreshold(0.2);
+  ASSERT_TRUE(original.detect(v.I));
+  original.setRegionsOfInterest(rois);
+  vpSSLDetector copy(original);
+  vpSSLDetector assigned;
+  assigned = original;
+  for (const vpSSLDetector *d : {&copy, &assigned}) {
+    EXPECT_EQ(d->getThreshold(), 0.2);
+    EXPECT_EQ(d->getLandmarks().size(), original.getLandmarks().size());
+    EXPECT_EQ(d->getNbObjects(), original.getNbObjects());
+  }
+  // The copies re-read the original's previous landmarks from the regions, as the original does; a copy detects on
+  // its own (the original's next results do not change it).
+  ASSERT_TRUE(original.detect(v.I));
+  ASSERT_TRUE(copy.detect(v.I));
+  ASSERT_TRUE(assigned.detect(v.I));
+  EXPECT_TRUE(vpSSLDetectorTestAccess::getMatchedRegions(copy).empty()) << "a landmark was not re-read";
+  for (const vpSSLDetector *d : {&copy, &assigned}) {
+    EXPECT_FALSE(d->getLastSearchWasFull());
+    ASSERT_EQ(d->getLandmarks().size(), original.getLandmarks().size());
+    for (size_t k = 0; k < original.getLandmarks().size(); ++k) {
+      EXPECT_EQ(d->getLandmarks()[k].u, original.getLandmarks()[k].u);
+      EXPECT_EQ(d->getLandmarks()[k].radius, original.getLandmarks()[k].radius);
+    }
+  }
+  original.setRegionsOfInterest({});
+  original.setThreshold(0.5);
+  EXPECT_EQ(copy.getThreshold(), 0.2);
+  vpSSLDetector moved(std::move(copy));
+  EXPECT_FALSE(moved.getLastSearchWasFull());
+  EXPECT_EQ(moved.getLandmarks().size(), original.getLandmarks().size());
 }
 
 TEST(DetectorRoi, NoHeapAllocationInSteadyState)
@@ -177,15 +205,22 @@ TEST(DetectorRoi, NoHeapAllocationInSteadyState)
     vpSSLDetector detector;
     detector.setNbThreads(1);
     detector.setSmallLandmarkMode(mode == 2);
-    if (mode == 1 || mode == 3) {
-      detector.setFullSearchPeriod(3);
-      detector.setRegionsOfInterest(mode == 1 ? rois : offRois);
-    }
+    // In ROI mode, every third call searches the whole image, as a tracker with a full-search period of 3 asks.
+    int call = 0;
+    const std::vector<vpRect> none;
+    auto nextRegions = [&]() {
+      ++call;
+      if (mode == 1 || mode == 3) {
+        detector.setRegionsOfInterest(call % 3 == 0 ? none : (mode == 1 ? rois : offRois));
+      }
+    };
     // Buffers grow during the first calls (a full-search frame included in ROI mode).
     for (int k = 0; k < 4; ++k) {
+      nextRegions();
       ASSERT_TRUE(detector.detect(v.I));
     }
     for (int k = 0; k < 3; ++k) {
+      nextRegions();
       long detectNew = 0;
       {
         const sslt::AllocationCounter counter;
@@ -195,7 +230,9 @@ TEST(DetectorRoi, NoHeapAllocationInSteadyState)
       ASSERT_EQ(nbFound(detector, v.centres), 3u) << "mode " << mode;
       EXPECT_EQ(detectNew, 0) << "mode " << mode << ", call " << k;
       if (mode == 3 && !detector.getLastSearchWasFull()) {
-        EXPECT_LT(detector.getMapRegions().size(), detector.getMatchedRegions().size()) << "no decimated region";
+        EXPECT_LT(vpSSLDetectorTestAccess::getMapRegions(detector).size(),
+                  vpSSLDetectorTestAccess::getMatchedRegions(detector).size())
+            << "no decimated region";
       }
     }
   }

@@ -29,6 +29,8 @@
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLRenderer.h>
 
+#include "vpSSLDetectorTestAccess.h"
+
 namespace {
 struct View
 {
@@ -99,7 +101,6 @@ std::vector<vpSSLLandmark> allModes(const View &near, const View &far)
     detector.setSmallLandmarkMode(mode == 2);
     std::vector<vpSSLLandmark> l = run(detector, v.I, 1);
     all.insert(all.end(), l.begin(), l.end());
-    detector.setFullSearchPeriod(0);
     detector.setRegionsOfInterest(roisAround(v.centres));
     l = run(detector, v.I, 2);
     all.insert(all.end(), l.begin(), l.end());
@@ -223,7 +224,6 @@ TEST(DetectorSpeedPaths, RoiNormalisationGivesTheWholeImageReading)
     vpSSLDetector tracked;
     tracked.setNbThreads(1);
     tracked.setSmallLandmarkMode(mode == 1);
-    tracked.setFullSearchPeriod(0);
     tracked.setRegionsOfInterest(roisAround(v.centres));
     // The first tracking frame has no previous landmark: every landmark is read from scratch, as in the full
     // search, but on an image of which only the regions (grown by the window) are normalised.
@@ -253,7 +253,6 @@ TEST(DetectorSpeedPaths, TrackedDecimatedScoreIsTheMapAtTheCentre)
   vpSSLDetector tracked;
   tracked.setNbThreads(1);
   tracked.setDecimation(2);
-  tracked.setFullSearchPeriod(0);
   tracked.setRegionsOfInterest(roisAround(v.centres));
   ASSERT_TRUE(tracked.detect(v.I)); // read from scratch
   ASSERT_TRUE(tracked.detect(v.I)); // re-read around the previous ellipses
@@ -292,8 +291,9 @@ TEST(DetectorSpeedPaths, MatchingMapIsZeroOutsideTheRegionsFromFrameToFrame)
     vpSSLDetector detector;
     detector.setNbThreads(1);
     detector.setDecimation(decimation);
-    detector.setFullSearchPeriod(4);
-    const std::vector<vpRect> *sequence[] = {&a, &b, &a, &b, &b, &a}; // the 4th call searches the whole image
+    // The 4th call searches the whole image, as a tracker with a full-search period of 4 asks.
+    const std::vector<vpRect> none;
+    const std::vector<vpRect> *sequence[] = {&a, &b, &a, &none, &b, &a};
     for (size_t k = 0; k < 6; ++k) {
       detector.setRegionsOfInterest(*sequence[k]);
       detector.detect(v.I);
@@ -304,9 +304,8 @@ TEST(DetectorSpeedPaths, MatchingMapIsZeroOutsideTheRegionsFromFrameToFrame)
       // The regions whose landmark was re-read from their centre are not matched, nor those of a large landmark
       // matched on the decimated image (getMapRegions()): a fresh detector, which has no previous landmark, matches
       // all of its regions at its own resolution.
-      const std::vector<vpRect> matched = detector.getMapRegions();
+      const std::vector<vpRect> matched = vpSSLDetectorTestAccess::getMapRegions(detector);
       if (k != 3) {
-        fresh.setFullSearchPeriod(0);
         fresh.setRegionsOfInterest(matched);
       }
       if (k == 3 || !matched.empty()) {
@@ -339,10 +338,9 @@ TEST(DetectorSpeedPaths, PredictedLandmarksAreReReadWithoutMatching)
     ASSERT_TRUE(detector.detect(v.I));
     const std::vector<vpSSLLandmark> full = detector.getLandmarks();
     ASSERT_EQ(full.size(), 3u);
-    detector.setFullSearchPeriod(0);
     detector.setRegionsOfInterest(roisAround(v.centres));
     detector.detect(v.I);
-    EXPECT_TRUE(detector.getMatchedRegions().empty()) << "decimation " << decimation;
+    EXPECT_TRUE(vpSSLDetectorTestAccess::getMatchedRegions(detector).empty()) << "decimation " << decimation;
     const vpImage<int> &M = detector.getMatchingMap();
     size_t nonZero = 0;
     for (unsigned int i = 0; i < M.getSize(); ++i) {
@@ -373,10 +371,9 @@ TEST(DetectorSpeedPaths, LandmarksThatMovedFarFromThePredictionAreMatched)
     detector.setNbThreads(1);
     detector.setDecimation(decimation);
     ASSERT_TRUE(detector.detect(before.I));
-    detector.setFullSearchPeriod(0);
     detector.setRegionsOfInterest(roisAround(before.centres));
     detector.detect(after.I);
-    EXPECT_FALSE(detector.getMatchedRegions().empty()) << "decimation " << decimation;
+    EXPECT_FALSE(vpSSLDetectorTestAccess::getMatchedRegions(detector).empty()) << "decimation " << decimation;
     ASSERT_TRUE(detector.getTargetMatch().found) << "decimation " << decimation;
     for (size_t k = 0; k < after.centres.size(); ++k) {
       const vpSSLLandmark *l = detector.getMatchedLandmark(k);
@@ -403,11 +400,11 @@ TEST(DetectorSpeedPaths, LargePredictedLandmarksAreMatchedOnTheDecimatedImage)
   for (const vpSSLLandmark &l : detector.getLandmarks()) {
     ASSERT_GE(l.minorRadius, 25.) << "the test needs large landmarks";
   }
-  detector.setFullSearchPeriod(0);
   detector.setRegionsOfInterest(roisAround(before.centres));
   detector.detect(after.I);
-  EXPECT_EQ(detector.getMatchedRegions().size(), 3u);
-  EXPECT_TRUE(detector.getMapRegions().empty()) << "every region was matched on the decimated image";
+  EXPECT_EQ(vpSSLDetectorTestAccess::getMatchedRegions(detector).size(), 3u);
+  EXPECT_TRUE(vpSSLDetectorTestAccess::getMapRegions(detector).empty())
+      << "every region was matched on the decimated image";
   size_t nonZero = 0;
   const vpImage<int> &M = detector.getMatchingMap();
   for (unsigned int i = 0; i < M.getSize(); ++i) {
@@ -435,18 +432,17 @@ TEST(DetectorSpeedPaths, RegionsTheDecimatedPassMissesAreMatchedAtFullResolution
   vpSSLDetector detector;
   detector.setNbThreads(1);
   ASSERT_TRUE(detector.detect(before.I));
-  detector.setFullSearchPeriod(0);
   const std::vector<vpRect> rois = roisAround(after.centres);
   detector.setRegionsOfInterest(rois);
   detector.detect(after.I);
-  EXPECT_EQ(detector.getMatchedRegions().size(), 3u);
-  EXPECT_FALSE(detector.getMapRegions().empty()) << "no region was matched again at full resolution";
+  EXPECT_EQ(vpSSLDetectorTestAccess::getMatchedRegions(detector).size(), 3u);
+  EXPECT_FALSE(vpSSLDetectorTestAccess::getMapRegions(detector).empty())
+      << "no region was matched again at full resolution";
   vpSSLDetector fresh;
   fresh.setNbThreads(1);
-  fresh.setFullSearchPeriod(0);
   fresh.setRegionsOfInterest(rois);
   fresh.detect(after.I);
-  EXPECT_EQ(fresh.getMapRegions().size(), 3u) << "a fresh detector has no prediction";
+  EXPECT_EQ(vpSSLDetectorTestAccess::getMapRegions(fresh).size(), 3u) << "a fresh detector has no prediction";
   EXPECT_GE(fresh.getLandmarks().size(), 2u);
   EXPECT_EQ(detector.getLandmarks().size(), fresh.getLandmarks().size());
   for (const vpSSLLandmark &l : fresh.getLandmarks()) {

@@ -246,6 +246,34 @@ double trackWithOdometry(const Sequence &s, bool corrupt, unsigned int &rejected
 }
 
 // Odometry that is not finite or jumps 100 m is not used, and the pose stays on the target.
+// Paper Sec. 4.1: the tracker alone keeps the full-search period. While it has regions of interest, the n-th, 2n-th,
+// ... image since they appeared is searched whole all the same; without regions every image is.
+TEST(Tracker, EveryNthImageWithRegionsIsSearchedWhole)
+{
+  const Sequence &s = simulatedApproach();
+  for (unsigned int period : {0u, 3u}) {
+    vpSSLTracker tracker(s.target, s.cam, s.vMc);
+    tracker.setSeed(2);
+    configure(tracker.getDetector());
+    tracker.setFullSearchPeriod(period);
+    unsigned int sinceRegions = 0, fullWithRegions = 0, inRegions = 0;
+    for (size_t i = 0; i < s.frames.size(); ++i) {
+      tracker.track(s.images[i], vpHomogeneousMatrix(s.frames[i].oMv));
+      const bool regions = !tracker.getRegionsOfInterest().empty();
+      sinceRegions = regions ? sinceRegions + 1 : 0;
+      const bool full = !regions || (period > 0 && sinceRegions % period == 0);
+      EXPECT_EQ(tracker.getLastSearchWasFull(), full) << "period " << period << ", image " << i;
+      fullWithRegions += regions && tracker.getLastSearchWasFull() ? 1 : 0;
+      inRegions += regions && !tracker.getLastSearchWasFull() ? 1 : 0;
+    }
+    // The sequence exercises both kinds of images with regions.
+    EXPECT_GE(inRegions, 4u) << "period " << period;
+    if (period > 0) {
+      EXPECT_GE(fullWithRegions, 1u);
+    }
+  }
+}
+
 TEST(Tracker, BadOdometryDoesNotCorruptThePose)
 {
   const Sequence &s = simulatedApproach();

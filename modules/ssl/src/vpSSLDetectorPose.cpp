@@ -21,7 +21,8 @@ bool vpSSLDetector::detect(const vpImage<unsigned char> &I, const vpCameraParame
     positions->clear();
   }
   detect(I);
-  if (!m_targetMatch.found || m_targetMatch.nbMatched == 0) {
+  const vpSSLTargetMatch &match = getTargetMatch();
+  if (!match.found || match.nbMatched == 0) {
     return false;
   }
   const std::vector<vpSSLPoseHypothesis> hypotheses = vpSSLPoseEstimator(getTarget()).estimate(*this, cam);

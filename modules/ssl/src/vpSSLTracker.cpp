@@ -27,8 +27,8 @@ vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &
       m_selected(false), m_orientationKnown(false), m_heldLandmark(0), m_disagreeInRow(0), m_pose(), m_autoSmall(true),
       m_smallRadius(30.), m_predictedRadius(std::numeric_limits<double>::infinity()), m_nbReinitialisations(0),
       m_seenInRow(0), m_lostInRow(0), m_nbLandmarks(0), m_hasOdometry(false), m_oMvPrevious(), m_odometryUsed(false),
-      m_rois(), m_observations(), m_hypotheses(), m_seen(target.size(), false), m_seenX(target.size(), 0.),
-      m_seenY(target.size(), 0.)
+      m_rois(), m_hadRegions(false), m_regionFrames(0), m_observations(), m_hypotheses(), m_seen(target.size(), false),
+      m_seenX(target.size(), 0.), m_seenY(target.size(), 0.)
 {
   if (!(cam.get_px() > 0.) || !(cam.get_py() > 0.)) {
     throw vpException(vpException::badValue, "vpSSLTracker: the camera needs positive px and py");
@@ -43,7 +43,6 @@ vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &
     throw vpException(vpException::badValue, "vpSSLTracker: vMc (camera to vehicle): translation beyond +-%g m", t);
   }
   m_cMv = vMc.inverse();
-  m_detector.setFullSearchPeriod(m_fullSearchPeriod);
 }
 
 void vpSSLTracker::reset()
@@ -55,6 +54,7 @@ void vpSSLTracker::reset()
   m_hasOdometry = false;
   m_odometryUsed = false;
   m_rois.clear();
+  m_hadRegions = false;
   m_hypotheses.clear();
   m_selected = false;
   m_orientationKnown = false;
@@ -76,7 +76,6 @@ void vpSSLTracker::setSmallLandmarkRadius(double pixels)
 void vpSSLTracker::setFullSearchPeriod(unsigned int n)
 {
   m_fullSearchPeriod = n;
-  m_detector.setFullSearchPeriod(n);
 }
 
 void vpSSLTracker::setRoiSize(double side)
@@ -343,7 +342,17 @@ vpSSLTrackerState vpSSLTracker::process(const vpImage<unsigned char> &I)
 {
   predictRegions(I.getWidth(), I.getHeight());
   chooseScale();
-  m_detector.setRegionsOfInterest(m_rois);
+  // Paper Sec. 4.1: while there are regions, every n-th image (the n-th, 2n-th, ... since they appeared) is
+  // searched whole all the same, so that a landmark the regions miss is found again.
+  if (!m_rois.empty()) {
+    if (!m_hadRegions) {
+      m_regionFrames = 0;
+    }
+    ++m_regionFrames;
+  }
+  m_hadRegions = !m_rois.empty();
+  const bool full = m_rois.empty() || (m_fullSearchPeriod > 0 && m_regionFrames % m_fullSearchPeriod == 0);
+  m_detector.setRegionsOfInterest(full ? std::vector<vpRect>() : m_rois);
   m_detector.detect(I);
 
   const vpSSLTargetMatch &match = m_detector.getTargetMatch();

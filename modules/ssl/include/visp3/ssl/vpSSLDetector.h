@@ -5,19 +5,15 @@
 #ifndef VP_SSL_DETECTOR_H
 #define VP_SSL_DETECTOR_H
 
-#include <chrono>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpRect.h>
 #include <visp3/detection/vpDetectorBase.h>
-#include <visp3/ssl/vpSSLBrightnessNormalizer.h>
-#include <visp3/ssl/vpSSLConcentricReader.h>
 #include <visp3/ssl/vpSSLLandmark.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
-#include <visp3/ssl/vpSSLPeakDetector.h>
-#include <visp3/ssl/vpSSLRadiusEstimator.h>
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
 #include <visp3/visual_features/vpFeaturePoint.h>
 
@@ -62,12 +58,25 @@ struct VISP_SSL_EXPORT vpSSLDetectorTimes
   }
   \endcode
   See tutorial-ssl-detector.cpp.
+
+  The detector is copyable: a copy has the settings, the last results and the previous frame's landmarks (which a
+  tracking frame re-reads) of the original, and detects on its own from then on.
 */
 class VISP_SSL_EXPORT vpSSLDetector : public vpDetectorBase
 {
 public:
   //! Detector for \e target (default ssl3-a3).
   explicit vpSSLDetector(const vpSSLTarget &target = vpSSLTarget::ssl3a3());
+  //! Copy of \e other: its settings, results and tracking state.
+  vpSSLDetector(const vpSSLDetector &other);
+  //! Move: \e other is left without state and must not be used but to be destroyed or assigned to.
+  vpSSLDetector(vpSSLDetector &&other) noexcept;
+  //! Copy of \e other: its settings, results and tracking state.
+  vpSSLDetector &operator=(const vpSSLDetector &other);
+  //! Move: \e other is left without state and must not be used but to be destroyed or assigned to.
+  vpSSLDetector &operator=(vpSSLDetector &&other) noexcept;
+  //! Releases the detector and its working storage.
+  ~vpSSLDetector() override;
 
   /*!
     Detects the landmarks and identifies the target in \e I.
@@ -82,13 +91,9 @@ public:
   //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.10).
   void setThreshold(double threshold);
   //! Brightness normalisation before matching (default on, paper Fig. 13).
-  void setBrightnessNormalization(bool enable) { m_normalize = enable; }
+  void setBrightnessNormalization(bool enable);
   //! Worker threads of the matching function (0: all cores).
-  void setNbThreads(unsigned int n)
-  {
-    m_match.setNbThreads(n);
-    m_matchCoarse.setNbThreads(n);
-  }
+  void setNbThreads(unsigned int n);
   /*!
     Decimation of the matching pass, like AprilTag's quad decimate (default 1). With 2, the candidates are
     searched on the image decimated twice (2x2 box average) with a window of 0.35 w, then each is moved to the
@@ -104,7 +109,7 @@ public:
   */
   void setDecimation(unsigned int decimation);
   //! Decimation of the matching pass (1 or 2).
-  unsigned int getDecimation() const { return m_decimation; }
+  unsigned int getDecimation() const;
   //! Largest apparent radius searched (px, default 300).
   void setMaxRadius(double r);
   /*!
@@ -112,9 +117,9 @@ public:
     second, less accurate radius, kept to compare with the paper's Fig. 4-5; vpSSLLandmark::radius is the one to
     use). When off, radiusEq7 is 0 and the sweep costs nothing.
   */
-  void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
+  void setRadiusSweep(bool enable);
   //! Whether the Eq. 7 sweep is computed (setRadiusSweep()).
-  bool getRadiusSweep() const { return m_radiusSweep; }
+  bool getRadiusSweep() const;
   /*!
     Small-landmark mode (default off). The discrete matching function needs rings of a few pixels and a
     window not much larger than 1.4 times the apparent radius (beyond it the white paper around the
@@ -126,10 +131,11 @@ public:
   */
   void setSmallLandmarkMode(bool enable);
   //! Whether the small-landmark mode is on.
-  bool getSmallLandmarkMode() const { return m_upsample; }
+  bool getSmallLandmarkMode() const;
   /*!
     Restricts the next detections to these rectangles (empty: whole image), each centred on a predicted
-    landmark (paper Sec. 4.1: vpSSLTracker centres them on its prediction). In these tracking frames:
+    landmark (paper Sec. 4.1: vpSSLTracker centres them on its prediction, and gives none on the frames that
+    search the whole image, vpSSLTracker::setFullSearchPeriod()). In these tracking frames:
     - a landmark of the previous frame whose centre lies within half its smaller semi-axis of a rectangle's
       centre is first re-read straight from that centre (symmetry centring, then its rings around its previous
       ellipse), without any matching; its score is then the full-resolution map at its centre (a full search
@@ -143,52 +149,33 @@ public:
       inside it, nearest its centre) has a smaller semi-axis of 0.625 w or more (25 px for w = 40: the envelope of
       the decimated pass) is matched on the image decimated twice, as with setDecimation(2), a tenth of the work;
       if no landmark is read there, it is matched again at full resolution.
-    getMatchingMap() is 0 outside the rectangles matched at its resolution (getMapRegions()).
+    getMatchingMap() is 0 outside the rectangles of the last tracking frame matched at its resolution.
   */
   void setRegionsOfInterest(const std::vector<vpRect> &rois);
-  /*!
-    Regions of interest that the last tracking frame matched: those whose landmark was not re-read from their
-    centre (setRegionsOfInterest()). Empty after a full search.
-  */
-  const std::vector<vpRect> &getMatchedRegions() const { return m_pendingRois; }
-  /*!
-    Regions of the last tracking frame matched at the resolution of getMatchingMap(): getMatchedRegions() but for
-    those of a full-resolution detector (setDecimation(1)) whose predicted landmark was matched, and read, on the
-    decimated image (setRegionsOfInterest()). Empty after a full search.
-  */
-  const std::vector<vpRect> &getMapRegions() const { return m_mapRois; }
-  /*!
-    Full-search period n of the tracking mode (default 10, paper Sec. 4.1): while regions of interest
-    are set, every n-th detect() call (the n-th, 2n-th, ... since the regions were first set) searches
-    the whole image instead, so that a landmark outside the regions is found again. 0: never; 1: always.
-  */
-  void setFullSearchPeriod(unsigned int n) { m_fullSearchPeriod = n; }
-  //! Full-search period of the tracking mode.
-  unsigned int getFullSearchPeriod() const { return m_fullSearchPeriod; }
-  //! Whether the last detect() searched the whole image (always true without regions of interest).
-  bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
+  //! Whether the last detect() searched the whole image: no region of interest was set (setRegionsOfInterest()).
+  bool getLastSearchWasFull() const;
 
-  unsigned int getWindow() const { return m_window; }                       ///< Window length w (at full resolution).
-  double getThreshold() const { return m_threshold; }                       ///< Score threshold.
-  bool getBrightnessNormalization() const { return m_normalize; }           ///< Whether normalisation is on.
-  const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); } ///< Target model.
+  unsigned int getWindow() const;          ///< Window length w (at full resolution).
+  double getThreshold() const;             ///< Score threshold.
+  bool getBrightnessNormalization() const; ///< Whether normalisation is on.
+  const vpSSLTarget &getTarget() const;    ///< Target model.
 
   //! Landmarks of the last detection, best score first.
-  const std::vector<vpSSLLandmark> &getLandmarks() const { return m_landmarks; }
+  const std::vector<vpSSLLandmark> &getLandmarks() const;
   //! Target identified in the last detection.
-  const vpSSLTargetMatch &getTargetMatch() const { return m_targetMatch; }
+  const vpSSLTargetMatch &getTargetMatch() const;
   //! The landmark matched to target landmark \e i in the last detection, or nullptr.
   const vpSSLLandmark *getMatchedLandmark(size_t i) const;
   //! Stage times of the last detection.
-  const vpSSLDetectorTimes &getTimes() const { return m_times; }
+  const vpSSLDetectorTimes &getTimes() const;
   /*!
-    Matching map of the last detection (zero outside the regions of interest of getMapRegions() in a tracking
-    frame), at the resolution it was computed: half the image's with decimation 2 (setDecimation()), twice in the
-    small-landmark mode.
+    Matching map of the last detection (zero outside the regions of interest matched at its resolution in a
+    tracking frame, setRegionsOfInterest()), at the resolution it was computed: half the image's with decimation 2
+    (setDecimation()), twice in the small-landmark mode.
   */
-  const vpImage<int> &getMatchingMap() const { return m_mainMap.map; }
+  const vpImage<int> &getMatchingMap() const;
   //! The matching function in use.
-  const vpSSLMatchingFunction &getMatchingFunction() const { return m_match; }
+  const vpSSLMatchingFunction &getMatchingFunction() const;
 
   /*!
     Visual features of the matched landmarks, in target landmark order (unmatched ones skipped):
@@ -243,92 +230,13 @@ public:
               std::vector<double> *projErrors2 = nullptr, std::vector<vpTranslationVector> *positions = nullptr);
 
 private:
-  // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
-  struct MatchMap
-  {
-    vpImage<int> map;
-    std::vector<vpRect> written;
-    bool allWritten = true; // whether the last call wrote the whole map (or it is uninitialised)
-  };
+  // The tests read the regions a tracking frame matched through it (modules/ssl/src/vpSSLDetectorTestAccess.h).
+  friend class vpSSLDetectorTestAccess;
+  class Impl;
 
   void fillObjects();
-  // Normalisation, matching and peaks of the whole image (\e regions nullptr) or of regions, at full resolution or
-  // on the image decimated twice (\e coarse), then the ring reading of the peaks; the stage times are added up.
-  void searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &raw, bool coarse,
-                     const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
-  // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame.
-  bool insideFound(double u, double v) const;
-  // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
-  bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
-  // Whether the landmark a tracking frame's region predicts is large enough for the decimated pass.
-  bool largeLandmarkIn(const vpRect &r) const;
-  // Sets \e map to I's size and to 0 where the last call wrote it.
-  void clearMap(const vpImage<unsigned char> &I, MatchMap &map);
-  void matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
-                    const std::vector<vpRect> &rois, MatchMap &map);
-  int fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const;
-  void normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach);
-  int crossMatch(int u, int v) const;
-  bool refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid);
-  // Eq. 7 sweep, back to image pixels, duplicate check; adds the landmark and fills its region. \e rowOnly: only
-  // the sweep's row is normalised (else \e normalized is the whole normalised image).
-  bool keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw, const vpImage<unsigned char> &normalized,
-                    bool rowOnly, double scale);
-  // Tracking frame: re-reads each region's previous landmark from the region's centre; the regions left are
-  // listed in m_pendingRois.
-  void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
-  double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
-  // The landmark of the previous detection nearest to (u, v) and within half its smaller semi-axis, if any.
-  const vpSSLLandmark *previousNear(double u, double v) const;
 
-  vpSSLBrightnessNormalizer m_normalizer;
-  vpSSLMatchingFunction m_match;
-  vpSSLPeakDetector m_peakDetector;
-  vpSSLRadiusEstimator m_radiusEstimator;
-  vpSSLConcentricReader m_concentricReader;
-  unsigned int m_allAroundLeft = 0; // candidates vpSSLConcentricReader may still read this frame
-  vpSSLTargetIdentifier m_identifier;
-  bool m_normalize;
-  bool m_upsample;
-  unsigned int m_window;
-  unsigned int m_decimation;
-  vpSSLMatchingFunction m_matchCoarse; // window w / 2, on the decimated image
-  double m_maxRadius;
-  bool m_radiusSweep;
-  double m_threshold;
-  std::vector<vpRect> m_rois;
-  std::vector<vpRect> m_noRois;       // always empty: the whole image
-  std::vector<vpRect> m_pendingRois;  // regions of this tracking frame whose landmark was not re-read directly
-  std::vector<size_t> m_pendingIndex; // their indices in m_rois
-  // Regions of a full-resolution tracking frame matched on the decimated image, their indices, and the others.
-  std::vector<vpRect> m_coarseRois, m_fineRois;
-  std::vector<size_t> m_coarseIndex;
-  std::vector<vpRect> m_mapRois; // regions of this tracking frame matched into getMatchingMap()
-  unsigned int m_fullSearchPeriod;
-  unsigned long m_roiCalls; // detect() calls with regions of interest since they were set
-  bool m_lastSearchWasFull;
-
-  vpImage<unsigned char> m_normalized;
-  vpImage<unsigned char> m_upsampled;
-  vpImage<unsigned char> m_decimated;  // normalised, decimated image (decimation 2)
-  vpImage<unsigned char> m_sweepRow;   // one normalised full-resolution row, for the Eq. 7 sweep
-  unsigned char m_lut[256];            // normalisation table of the last frame
-  int m_offsetA[129], m_offsetB[129];  // a_xi, b_xi of the full-resolution window (refinePeak())
-  std::vector<vpImagePoint> m_refined; // full-resolution peaks already read this frame
-  // Normalised pixels around a decimated peak (refinePeak()): rows (row-major) and columns (column-major).
-  std::vector<unsigned char> m_crossRows, m_crossCols;
-  int m_crossU0 = 0, m_crossV0 = 0, m_crossW = 0, m_crossCu0 = 0, m_crossCv0 = 0, m_crossH = 0;
-  int m_imageW = 0, m_imageH = 0;
-  std::vector<vpSSLLandmark> m_previous; // landmarks of the previous detect(), re-read in tracking mode
-  std::vector<char> m_roiFilled;         // whether a landmark has been read inside each region this frame
-  std::vector<vpRect> m_scaledRois;
-  MatchMap m_mainMap;   // the map of getMatchingMap()
-  MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
-  std::vector<vpSSLPeak> m_peaks;
-  std::vector<vpSSLLandmark> m_landmarks;
-  std::vector<int> m_sweep; // Eq. 7 sweep, reused
-  vpSSLTargetMatch m_targetMatch;
-  vpSSLDetectorTimes m_times;
+  std::unique_ptr<Impl> m_impl;
 };
 
 #endif

@@ -286,6 +286,8 @@ private:
   vpHomogeneousMatrix m_oMvPrevious;
   bool m_odometryUsed;
   std::vector<vpRect> m_rois;
+  bool m_hadRegions;            // whether the previous image had regions of interest
+  unsigned long m_regionFrames; // images with regions of interest since they appeared (setFullSearchPeriod())
   std::vector<vpSSLObservation> m_observations;
   std::vector<vpSSLObservation> m_unlabelled; // the observations given to the filter's update
   std::vector<vpSSLPoseHypothesis> m_hypotheses;

@@ -1,0 +1,142 @@
+/*
+  Private to vpSSLDetector: the stages of one frame (normalisation, matching, peaks, ring reading, identification),
+  over the whole image or the regions of interest that vpSSLRegionPlanner plans.
+*/
+#ifndef VP_SSL_DETECTION_PIPELINE_H
+#define VP_SSL_DETECTION_PIPELINE_H
+
+#include <chrono>
+#include <vector>
+
+#include <visp3/core/vpImage.h>
+#include <visp3/core/vpRect.h>
+#include <visp3/ssl/vpSSLBrightnessNormalizer.h>
+#include <visp3/ssl/vpSSLConcentricReader.h>
+#include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLLandmark.h>
+#include <visp3/ssl/vpSSLMatchingFunction.h>
+#include <visp3/ssl/vpSSLPeakDetector.h>
+#include <visp3/ssl/vpSSLRadiusEstimator.h>
+#include <visp3/ssl/vpSSLTargetIdentifier.h>
+
+#include "vpSSLRegionPlanner.h"
+
+/*
+  The settings and the working storage of vpSSLDetector's detection, and its results. Every setting and result
+  is the one vpSSLDetector documents under the same name.
+*/
+class vpSSLDetectionPipeline
+{
+public:
+  explicit vpSSLDetectionPipeline(const vpSSLTarget &target);
+
+  // Detects the landmarks and identifies the target in \e I: the whole image without regions of interest, else
+  // the regions (vpSSLDetector::setRegionsOfInterest()).
+  void detect(const vpImage<unsigned char> &I);
+
+  void setWindow(unsigned int w);
+  void setThreshold(double threshold);
+  void setBrightnessNormalization(bool enable) { m_normalize = enable; }
+  void setNbThreads(unsigned int n)
+  {
+    m_match.setNbThreads(n);
+    m_matchCoarse.setNbThreads(n);
+  }
+  void setDecimation(unsigned int decimation);
+  void setMaxRadius(double r);
+  void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
+  void setSmallLandmarkMode(bool enable);
+  void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
+
+  unsigned int getWindow() const { return m_window; }
+  double getThreshold() const { return m_threshold; }
+  bool getBrightnessNormalization() const { return m_normalize; }
+  unsigned int getDecimation() const { return m_decimation; }
+  bool getRadiusSweep() const { return m_radiusSweep; }
+  bool getSmallLandmarkMode() const { return m_upsample; }
+  const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
+  bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
+
+  const std::vector<vpSSLLandmark> &getLandmarks() const { return m_landmarks; }
+  const vpSSLTargetMatch &getTargetMatch() const { return m_targetMatch; }
+  vpSSLDetectorTimes &getTimes() { return m_times; }
+  const vpSSLDetectorTimes &getTimes() const { return m_times; }
+  const vpImage<int> &getMatchingMap() const { return m_mainMap.map; }
+  const vpSSLMatchingFunction &getMatchingFunction() const { return m_match; }
+  const vpSSLRegionPlanner &getPlanner() const { return m_planner; }
+
+private:
+  // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
+  struct MatchMap
+  {
+    vpImage<int> map;
+    std::vector<vpRect> written;
+    bool allWritten = true; // whether the last call wrote the whole map (or it is uninitialised)
+  };
+
+  // Normalisation, matching and peaks of the whole image (\e regions nullptr) or of regions, at full resolution or
+  // on the image decimated twice (\e coarse), then the ring reading of the peaks; the stage times are added up.
+  void searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &raw, bool coarse,
+                     const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
+  // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame.
+  bool insideFound(double u, double v) const;
+  // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
+  bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
+  // Sets \e map to I's size and to 0 where the last call wrote it.
+  void clearMap(const vpImage<unsigned char> &I, MatchMap &map);
+  void matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
+                    const std::vector<vpRect> &rois, MatchMap &map);
+  int fullResolutionMatch(const vpImage<unsigned char> &I, int u, int v) const;
+  void normalizeCross(const vpImage<unsigned char> &I, int u0, int v0, int reach);
+  int crossMatch(int u, int v) const;
+  bool refinePeak(const vpImage<unsigned char> &I, vpSSLPeak &peak, bool grid);
+  // Eq. 7 sweep, back to image pixels, duplicate check; adds the landmark and fills its region. \e rowOnly: only
+  // the sweep's row is normalised (else \e normalized is the whole normalised image).
+  bool keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw, const vpImage<unsigned char> &normalized,
+                    bool rowOnly, double scale);
+  // Tracking frame: re-reads each region's previous landmark from the region's centre; the regions left are
+  // deferred to the matching (vpSSLRegionPlanner::getPending()).
+  void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
+  double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
+
+  vpSSLBrightnessNormalizer m_normalizer;
+  vpSSLMatchingFunction m_match;
+  vpSSLPeakDetector m_peakDetector;
+  vpSSLRadiusEstimator m_radiusEstimator;
+  vpSSLConcentricReader m_concentricReader;
+  unsigned int m_allAroundLeft = 0; // candidates vpSSLConcentricReader may still read this frame
+  vpSSLTargetIdentifier m_identifier;
+  bool m_normalize;
+  bool m_upsample;
+  unsigned int m_window;
+  unsigned int m_decimation;
+  vpSSLMatchingFunction m_matchCoarse; // window 0.35 w, on the decimated image
+  double m_maxRadius;
+  bool m_radiusSweep;
+  double m_threshold;
+  vpSSLRegionPlanner m_planner;
+  std::vector<vpRect> m_noRois; // always empty: the whole image
+  bool m_lastSearchWasFull;
+
+  vpImage<unsigned char> m_normalized;
+  vpImage<unsigned char> m_upsampled;
+  vpImage<unsigned char> m_decimated;  // normalised, decimated image (decimation 2)
+  vpImage<unsigned char> m_sweepRow;   // one normalised full-resolution row, for the Eq. 7 sweep
+  unsigned char m_lut[256];            // normalisation table of the last frame
+  int m_offsetA[129], m_offsetB[129];  // a_xi, b_xi of the full-resolution window (refinePeak())
+  std::vector<vpImagePoint> m_refined; // full-resolution peaks already read this frame
+  // Normalised pixels around a decimated peak (refinePeak()): rows (row-major) and columns (column-major).
+  std::vector<unsigned char> m_crossRows, m_crossCols;
+  int m_crossU0 = 0, m_crossV0 = 0, m_crossW = 0, m_crossCu0 = 0, m_crossCv0 = 0, m_crossH = 0;
+  int m_imageW = 0, m_imageH = 0;
+  std::vector<vpRect> m_scaledRois;
+  MatchMap m_mainMap;   // the map of getMatchingMap()
+  MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
+  std::vector<vpSSLPeak> m_peaks;
+  std::vector<vpSSLLandmark> m_landmarks;
+  std::vector<int> m_sweep; // Eq. 7 sweep, reused
+  vpSSLTargetMatch m_targetMatch;
+  vpSSLDetectorTimes m_times;
+};
+
+#endif
