@@ -461,5 +461,9 @@ TEST(HomingBehaviour, SettersRejectBadValues)
   EXPECT_THROW(b.setAutoDock(1., 0.1, 0.), vpException);
   EXPECT_THROW(b.setAlignTimeout(-1.), vpException);
   EXPECT_THROW(b.setAlignTimeout(kNaN), vpException);
+  EXPECT_THROW(b.setSearchHold(-0.5, 0.3), vpException);
+  EXPECT_THROW(b.setSearchHold(0.5, kNaN), vpException);
+  EXPECT_THROW(b.setRangeIntegralGain(-0.1), vpException);
+  EXPECT_THROW(b.setRangeIntegralGain(kNaN), vpException);
   EXPECT_EQ(vpSSLHomingBehaviour::getStateName(SSL_HOMING_DOCKED), "docked");
 }

@@ -21,10 +21,12 @@ vpSSLHomingBehaviour::vpSSLHomingBehaviour()
     : m_law(), m_standOff(2.), m_searchYawRate(0.2), m_searchDepthMin(1.), m_searchDepthMax(3.), m_searchPeriod(40.),
       m_searchDepthGain(0.5), m_alignTolerance(vpMath::rad(5.)), m_lostTimeout(3.), m_minPoints(1), m_autoDockHold(-1.),
       m_autoDockRangeTolerance(0.1), m_autoDockAngleTolerance(vpMath::rad(5.)), m_alignTimeout(5.),
-      m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_state(SSL_HOMING_SEARCH), m_dockRequested(false),
-      m_started(false), m_time(0.), m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN), m_seen(false),
-      m_lastCollision(false), m_nbCollisions(0), m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.), m_searchDepth(kNaN),
-      m_velocity(6, 0.), m_cameraVelocity(6, 0.)
+      m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_searchHoldGain(0.5), m_searchHoldSpeed(0.3),
+      m_rangeIntegralGain(0.), m_state(SSL_HOMING_SEARCH), m_dockRequested(false), m_started(false), m_time(0.),
+      m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN), m_seen(false), m_lastCollision(false), m_nbCollisions(0),
+      m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.), m_searchDepth(kNaN),
+      m_hasOdometry(false), m_position{kNaN, kNaN}, m_heading{1., 0.}, m_anchor{kNaN, kNaN}, m_targetCentre{kNaN, kNaN},
+      m_targetNormal{kNaN, kNaN}, m_rangeIntegral(0.), m_previousTime(0.), m_velocity(6, 0.), m_cameraVelocity(6, 0.)
 {
   m_law.setStandOff(m_standOff);
 }
@@ -136,6 +138,26 @@ void vpSSLHomingBehaviour::setBlindDock(double range, double minSpeed)
   m_blindDockSpeed = minSpeed;
 }
 
+void vpSSLHomingBehaviour::setSearchHold(double gain, double maxSpeed)
+{
+  if (!std::isfinite(gain) || !std::isfinite(maxSpeed) || gain < 0. || maxSpeed < 0.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setSearchHold: gain %g, maxSpeed %g: need finite values >= 0", gain,
+                      maxSpeed);
+  }
+  m_searchHoldGain = gain;
+  m_searchHoldSpeed = maxSpeed;
+}
+
+void vpSSLHomingBehaviour::setRangeIntegralGain(double gain)
+{
+  if (!std::isfinite(gain) || gain < 0.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setRangeIntegralGain: gain: %g is not a finite value >= 0", gain);
+  }
+  m_rangeIntegralGain = gain;
+}
+
 std::string vpSSLHomingBehaviour::getStateName(vpSSLHomingState state)
 {
   switch (state) {
@@ -174,6 +196,15 @@ void vpSSLHomingBehaviour::reset()
   m_range = kNaN;
   m_lastSurge = 0.;
   m_searchDepth = kNaN;
+  m_hasOdometry = false;
+  m_position[0] = m_position[1] = kNaN;
+  m_heading[0] = 1.;
+  m_heading[1] = 0.;
+  m_anchor[0] = m_anchor[1] = kNaN;
+  m_targetCentre[0] = m_targetCentre[1] = kNaN;
+  m_targetNormal[0] = m_targetNormal[1] = kNaN;
+  m_rangeIntegral = 0.;
+  m_previousTime = 0.;
   m_velocity = vpColVector(6, 0.);
   m_cameraVelocity = vpColVector(6, 0.);
 }
@@ -184,6 +215,10 @@ void vpSSLHomingBehaviour::setState(vpSSLHomingState state)
     m_state = state;
     m_stateStart = m_time;
     m_holdStart = kNaN;
+    // DOCK keeps the integral HOME built: it is the surge that balances the current along the axis.
+    if (state != SSL_HOMING_DOCK) {
+      m_rangeIntegral = 0.;
+    }
   }
 }
 
@@ -202,6 +237,37 @@ vpColVector vpSSLHomingBehaviour::searchCommand(double vehicleDepth)
   if (m_law.getAxisEnabled(SSL_AXIS_HEAVE) && std::isfinite(vehicleDepth)) {
     v[SSL_AXIS_HEAVE] = clamp(m_searchDepthGain * (m_searchDepth - vehicleDepth), vmax[SSL_AXIS_HEAVE]);
   }
+  // Station keeping on the odometry: the error to the anchor in the vehicle frame. While the vehicle turns, the
+  // surge pushes back whenever the nose points along the error, so a current slower than the mean of that push
+  // no longer carries the vehicle away from where the target was.
+  if (m_hasOdometry && m_searchHoldGain > 0. && std::isfinite(m_anchor[0])) {
+    double goal[2] = {m_anchor[0], m_anchor[1]};
+    if (std::isfinite(m_targetCentre[0])) {
+      // The target was located: go to the point on its axis at the stand-off, from where it is in view whatever
+      // the vehicle drifted to. From closer to the board's plane than that, first straight out along the axis, so
+      // that the way there does not cross the board.
+      const double out = (m_position[0] - m_targetCentre[0]) * m_targetNormal[0] +
+                         (m_position[1] - m_targetCentre[1]) * m_targetNormal[1];
+      const double gap = m_standOff - out;
+      if (gap > 0.25 * m_standOff) {
+        goal[0] = m_position[0] + gap * m_targetNormal[0];
+        goal[1] = m_position[1] + gap * m_targetNormal[1];
+      } else {
+        goal[0] = m_targetCentre[0] + m_standOff * m_targetNormal[0];
+        goal[1] = m_targetCentre[1] + m_standOff * m_targetNormal[1];
+      }
+    }
+    const double ex = goal[0] - m_position[0];
+    const double ey = goal[1] - m_position[1];
+    const double forward = m_heading[0] * ex + m_heading[1] * ey;
+    const double starboard = -m_heading[1] * ex + m_heading[0] * ey;
+    if (m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
+      v[SSL_AXIS_SURGE] = clamp(m_searchHoldGain * forward, std::min(m_searchHoldSpeed, vmax[SSL_AXIS_SURGE]));
+    }
+    if (m_law.getAxisEnabled(SSL_AXIS_SWAY)) {
+      v[SSL_AXIS_SWAY] = clamp(m_searchHoldGain * starboard, std::min(m_searchHoldSpeed, vmax[SSL_AXIS_SWAY]));
+    }
+  }
   return v;
 }
 
@@ -215,10 +281,24 @@ vpColVector vpSSLHomingBehaviour::blindDockCommand() const
 
 vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision)
 {
+  return step(t, input, vehicleDepth, collision, nullptr);
+}
+
+vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision,
+                                         const vpHomogeneousMatrix &oMv)
+{
+  return step(t, input, vehicleDepth, collision, &oMv);
+}
+
+vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision,
+                                       const vpHomogeneousMatrix *oMv)
+{
+  m_previousTime = m_time;
   if (!m_started) {
     m_started = true;
     m_time = std::isfinite(t) ? t : 0.;
     m_stateStart = m_time;
+    m_previousTime = m_time;
   } else if (std::isfinite(t) && t >= m_time) {
     m_time = t;
   }
@@ -236,6 +316,36 @@ vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input,
   m_seen = usable && input.nbPoints >= m_minPoints;
   if (m_seen) {
     m_lastSeen = m_time;
+  }
+  // The vehicle's x axis projected on the horizontal plane gives the heading; a vehicle pointing straight up or
+  // down has none, and that step counts as without odometry.
+  m_hasOdometry = false;
+  if (oMv != nullptr) {
+    const double hx = (*oMv)[0][0], hy = (*oMv)[1][0];
+    const double norm = std::sqrt(hx * hx + hy * hy);
+    if (std::isfinite(norm) && norm > 1e-6 && std::isfinite((*oMv)[0][3]) && std::isfinite((*oMv)[1][3])) {
+      m_hasOdometry = true;
+      m_position[0] = (*oMv)[0][3];
+      m_position[1] = (*oMv)[1][3];
+      m_heading[0] = hx / norm;
+      m_heading[1] = hy / norm;
+      if (m_seen && input.hasPose) {
+        // The target's centre and the horizontal direction out of its face (object Z points into the sheet).
+        const vpHomogeneousMatrix oMt = (*oMv) * m_law.getCameraToVehicle() * input.cMo;
+        const double nx = -oMt[0][2], ny = -oMt[1][2];
+        const double nn = std::sqrt(nx * nx + ny * ny);
+        if (std::isfinite(nn) && nn > 1e-3 && std::isfinite(oMt[0][3]) && std::isfinite(oMt[1][3])) {
+          m_targetCentre[0] = oMt[0][3];
+          m_targetCentre[1] = oMt[1][3];
+          m_targetNormal[0] = nx / nn;
+          m_targetNormal[1] = ny / nn;
+        }
+      }
+      if (m_seen || !std::isfinite(m_anchor[0])) {
+        m_anchor[0] = m_position[0];
+        m_anchor[1] = m_position[1];
+      }
+    }
   }
   const bool lostTooLong = !m_seen && (m_time - m_lastSeen > m_lostTimeout);
   // Angle between the optical axis and the ray to the target centre.
@@ -301,6 +411,17 @@ vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input,
     if (usable) {
       m_law.setStandOff(m_standOff);
       v = m_law.computeControlLaw(input);
+      if (m_rangeIntegralGain > 0. && m_law.getStatus() == SSL_SERVO_OK && m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
+        // Integrates only near the stand-off (within half of it), so that the approach from afar winds nothing
+        // up, and bounded so that the integral alone asks for at most half the surge limit.
+        const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
+        const double error = Zc - m_standOff;
+        if (std::fabs(error) < 0.5 * m_standOff) {
+          m_rangeIntegral =
+              clamp(m_rangeIntegral + error * (m_time - m_previousTime), 0.5 * vmax / m_rangeIntegralGain);
+        }
+        v[SSL_AXIS_SURGE] = clamp(v[SSL_AXIS_SURGE] + m_rangeIntegralGain * m_rangeIntegral, vmax);
+      }
       const bool holding = m_seen && std::fabs(Zc - m_standOff) < m_autoDockRangeTolerance &&
                            centreAngle < m_autoDockAngleTolerance && m_law.getStatus() == SSL_SERVO_OK;
       if (m_autoDockHold >= 0. && holding) {
@@ -319,6 +440,10 @@ vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input,
     if (usable) {
       m_law.setStandOff(0.);
       v = m_law.computeControlLaw(input);
+      if (m_law.getStatus() == SSL_SERVO_OK && m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
+        const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
+        v[SSL_AXIS_SURGE] = clamp(v[SSL_AXIS_SURGE] + m_rangeIntegralGain * m_rangeIntegral, vmax);
+      }
       if (m_law.getStatus() == SSL_SERVO_OK && Zc < m_blindDockRange) {
         // Final approach: the log-depth feature slows down exponentially near its floor, so a minimum surge
         // makes sure the nose reaches the target and trips the collision sensor.

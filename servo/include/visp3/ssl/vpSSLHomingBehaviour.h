@@ -8,6 +8,7 @@
 #include <string>
 
 #include <visp3/core/vpColVector.h>
+#include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/robot/vpRobot.h>
 #include <visp3/ssl/vpSSLConfig.h>
 #include <visp3/ssl/vpSSLServoInput.h>
@@ -39,12 +40,16 @@ enum vpSSLHomingState
   The target is \e seen at a frame when the input is valid with at least setMinPoints() measured points
   (nbPoints). Transitions, evaluated in update():
   - SEARCH: seen -> ALIGN. Command: yaw rate setSearchPattern() and heave tracking a depth that oscillates
-    between the pattern's two depths (triangle wave), so that a target above or below is swept.
+    between the pattern's two depths (triangle wave), so that a target above or below is swept. With odometry
+    (the update() that takes oMv) the search also holds its ground (setSearchHold()): surge (and sway, when the
+    law enables it) push the vehicle back in front of the target where it was last seen, or where the search began,
+    so that a current does not carry it off while it turns.
   - ALIGN: the target centre within setAlignTolerance() of the optical axis, or setAlignTimeout() seconds in
     ALIGN with the target seen -> HOME (-> DOCK if docking was requested). Command: vpSSLServoLaw::computeCentringLaw()
   (heave, pitch and yaw; no surge).
   - HOME: docking requested (startDocking(), or setAutoDock() after holding the stand-off) -> DOCK. Command:
-    vpSSLServoLaw::computeControlLaw() at the stand-off.
+    vpSSLServoLaw::computeControlLaw() at the stand-off, plus integral action on the range
+    (setRangeIntegralGain()) that balances a current along the target's axis; DOCK keeps that share of the surge.
   - DOCK: collision -> DOCKED. Command: the servo law with stand-off 0. When the target is lost within
     setBlindDockRange() of the camera (too close to be seen whole), the last surge is held (at least
     setBlindDockSpeed()) with the other axes at zero.
@@ -117,6 +122,30 @@ public:
   void setAutoDock(double holdSeconds, double rangeTolerance = 0.1, double angleTolerance = 5. * M_PI / 180.);
   //! Blind final approach: range (m) below which a lost target in DOCK keeps the surge, and its minimum speed.
   void setBlindDock(double range, double minSpeed);
+  /*!
+    Station keeping during SEARCH when update() is given the odometry. The goal: once the target has been seen
+    with a pose (vpSSLServoInput::hasPose), the point on its axis at the stand-off, from where it is in view
+    whatever the vehicle drifted to (and, from closer to the board's plane than that, first straight out along
+    the axis, so that the way back does not cross the board); before, the odometry position of the last step where
+    the target was seen, or of the first step with odometry. Surge = \e gain times the horizontal distance to the
+    goal along the vehicle's heading, saturated at \e maxSpeed (m/s) and the law's surge limit; the same on sway
+    when the law enables that axis. While the vehicle turns the surge pushes back whenever the nose points along
+    the error, about 2/pi of \e maxSpeed on average. \e gain = 0 disables it. Default: 0.5 1/s, 0.3 m/s.
+    The hold is as good as the odometry over a search (seconds to a minute): it needs the velocity over the ground
+    (a DVL or a visual odometry), not through the water.
+    \exception vpException if a value is not finite or is < 0.
+  */
+  void setSearchHold(double gain, double maxSpeed);
+  /*!
+    Integral action on the range in HOME: the surge gets \e gain times the integral of (range - stand-off) over
+    the time in HOME spent within half the stand-off of it (the approach from afar winds nothing up), that share
+    bounded by half the law's surge limit; DOCK keeps the share HOME ended with. A proportional law alone leaves the
+    offset at which its surge balances a head or tail current (0.5 m for 0.12 m/s with the default gains), enough to
+    keep the auto-dock's range tolerance from ever being met. \e gain = 0 disables it (default); 0.05 1/s^2 with the
+    default law settles in about 20 s.
+    \exception vpException if \e gain is not finite or is < 0.
+  */
+  void setRangeIntegralGain(double gain);
   //! Requests docking: HOME -> DOCK at the next update() (ALIGN -> DOCK directly once aligned).
   void startDocking() { m_dockRequested = true; }
   //! Cancels a docking request; DOCK -> HOME at the next update().
@@ -133,6 +162,13 @@ public:
     \return the vehicle-axes command (6-vector), always finite and within the law's limits.
   */
   vpColVector update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision);
+  /*!
+    The same step with the vehicle's odometry \e oMv (vehicle pose in a fixed frame with z down, e.g.
+    vpSSLTracker's odometry input): SEARCH then holds its ground (setSearchHold()). A non-finite \e oMv counts as
+    no odometry at this step.
+  */
+  vpColVector update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision,
+                     const vpHomogeneousMatrix &oMv);
 
   /*!
     Sends the last command to \e robot: vpRobot::ARTICULAR_FRAME sends the vehicle-axes command (an AUV
@@ -169,6 +205,8 @@ public:
 private:
   void setState(vpSSLHomingState state);
   vpColVector searchCommand(double vehicleDepth);
+  vpColVector step(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision,
+                   const vpHomogeneousMatrix *oMv);
   vpColVector blindDockCommand() const;
 
   vpSSLServoLaw m_law;
@@ -187,6 +225,9 @@ private:
   double m_alignTimeout;
   double m_blindDockRange;
   double m_blindDockSpeed;
+  double m_searchHoldGain;
+  double m_searchHoldSpeed;
+  double m_rangeIntegralGain;
 
   vpSSLHomingState m_state;
   bool m_dockRequested;
@@ -202,6 +243,14 @@ private:
   double m_range;
   double m_lastSurge;
   double m_searchDepth;
+  bool m_hasOdometry;       // odometry at this step
+  double m_position[2];     // horizontal odometry position at this step
+  double m_heading[2];      // cos, sin of the vehicle's x axis in the odometry frame
+  double m_anchor[2];       // where SEARCH holds the vehicle (NaN: no anchor yet)
+  double m_targetCentre[2]; // horizontal odometry position of the target when last seen with a pose (NaN: never)
+  double m_targetNormal[2]; // horizontal unit vector out of the target's face
+  double m_rangeIntegral;   // integral of (range - stand-off) over the time in HOME (m s)
+  double m_previousTime;    // time of the previous step
   vpColVector m_velocity;
   vpColVector m_cameraVelocity;
 };
