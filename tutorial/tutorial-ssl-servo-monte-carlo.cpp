@@ -72,6 +72,11 @@ Options:
   --max-current V      Largest current drawn (m/s, default 0.1; 0: still water).
   --dock-hold S,M,DEG  Auto-dock after S seconds in HOME within M metres of the stand-off and DEG degrees of
                        the optical axis (default 10,0.5,15; fig9 of tutorial-ssl-servo uses 10,0.1,5).
+  --station-keeping    The behaviour gets the odometry: SEARCH holds its ground in front of where the target was
+                       last seen (vpSSLHomingBehaviour::setSearchHold()), and HOME integrates the range error
+                       (setRangeIntegralGain(0.05)), so that a current neither carries the vehicle off while it
+                       searches nor holds it short of the stand-off (default off: the behaviour of
+                       tutorial-ssl-servo).
   --threads T          Runs in parallel (default 2); the results do not depend on it.
   --traces             Also write each run's steps as DIR/run-<i>-<method>.csv (tutorial-ssl-servo's columns).
   --output-dir DIR     Where runs.csv and summary.md go (default ".", created if needed).
@@ -100,6 +105,7 @@ struct Options
   std::string water = "mixed";
   double maxCurrent = 0.1;
   double dockHold = 10., dockRange = 0.5, dockAngle = 15.;
+  bool stationKeeping = false;
   long threads = 2;
   bool traces = false;
   std::string outputDir = ".";
@@ -186,6 +192,8 @@ Options parse(int argc, char **argv, bool &help)
       o.dockAngle = d;
     } else if (a == "--traces") {
       o.traces = true;
+    } else if (a == "--station-keeping") {
+      o.stationKeeping = true;
     } else if (a == "--threads") {
       o.threads = ssltut::parseThreads(a, value(), false, 64);
     } else if (a == "--output-dir") {
@@ -293,6 +301,8 @@ vpSSLClosedLoop::Scene makeScene(const Draw &d, const Options &opt)
   s.autoDockHold = opt.dockHold;
   s.autoDockRange = opt.dockRange;
   s.autoDockAngle = opt.dockAngle;
+  s.stationKeeping = opt.stationKeeping;
+  s.rangeIntegralGain = opt.stationKeeping ? 0.05 : 0.;
   s.wMoHome = vpSSLScenario("approach").getTargetHome();
   // The camera d.distance south of the target centre (the target faces south), then the vehicle origin behind it.
   const vpTranslationVector tHome = s.wMoHome.getTranslationVector();
@@ -558,7 +568,8 @@ static int run(int argc, char **argv)
        << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, current up to "
        << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
        << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
-       << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis\n\n";
+       << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
+       << (opt.stationKeeping ? ", station keeping on the odometry" : "") << "\n\n";
     md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
           "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
           "lost-target events |";

@@ -9,7 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo-monte-car
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --runs --seed --methods --time-limit --max-current --threads --traces --output-dir --width --height \
-           --small --quiet --help --start-range --start-heading --water ssl apriltag truth ssl-raw apriltag-raw \
+           --small --quiet --help --start-range --start-heading --water --station-keeping ssl apriltag truth ssl-raw apriltag-raw \
            runs.csv summary.md outcomes.png never-found lost hold-not-reached missed-board collision time-out; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done

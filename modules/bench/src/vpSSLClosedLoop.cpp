@@ -168,6 +168,7 @@ vpSSLClosedLoop::vpSSLClosedLoop(const Scene &scene, Method method, const vpCame
   // The 0.3 m ssl3-a3 pattern overflows the image within about 1.2 m (0.6 m for the behaviour's default): from
   // there the approach is blind, holding the last surge.
   m_homing.setBlindDock(scene.blindDockRange, scene.blindDockSpeed);
+  m_homing.setRangeIntegralGain(scene.rangeIntegralGain);
 
   m_renderer.setSupersampling(supersampling);
   if (isAprilTag(method)) {
@@ -239,7 +240,10 @@ vpSSLClosedLoop::Row vpSSLClosedLoop::step(int k)
     input = vpSSLServoInput::fromTracker(m_tracker);
   }
 
-  const vpColVector command = m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision());
+  const vpColVector command =
+      m_scene.stationKeeping
+          ? m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision(), m_auv.getOdometry())
+          : m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision());
   Row r;
   r.t = t;
   r.state = m_homing.getState();

@@ -70,6 +70,9 @@ public:
     double autoDockAngle = 5.;    //!< Centring tolerance of the auto-dock hold (deg), see setAutoDock().
     double blindDockRange = 1.3;  //!< See vpSSLHomingBehaviour::setBlindDock().
     double blindDockSpeed = 0.15; //!< See vpSSLHomingBehaviour::setBlindDock().
+    //! Give the behaviour the odometry (its SEARCH then holds its ground, vpSSLHomingBehaviour::setSearchHold()).
+    bool stationKeeping = false;
+    double rangeIntegralGain = 0.; //!< See vpSSLHomingBehaviour::setRangeIntegralGain().
     double timeStep = 0.2;        //!< Control period (s): vision at 5 Hz, dynamics sub-stepped inside.
     std::string scenario;         //!< tutorial-ssl-servo scenario whose events apply (stepEvents()), "" none.
     double duration = 0.;         //!< Scenario duration (s), for the event times.
