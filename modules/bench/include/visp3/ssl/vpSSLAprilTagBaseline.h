@@ -66,7 +66,7 @@ public:
 
   /*!
     Runs the baseline configuration on ViSP's rendered 640x480 36h11 benchmark image
-    (\e dir/tag36_11_640x480.png, five tags, truth \e dir/cMo_<id>.txt) the way ViSP's testAprilTag does:
+    (\e dir/tag36_11_640x480.png, five tags, truth \e dir/cMo_ID.txt for tag ID) the way ViSP's testAprilTag does:
     camera px = py = 700, u0 = 320, v0 = 240, tags 0-2 of 0.2 m and 3-4 of 0.1 m (black square).
     \return one result per tag id 0..4, found or not (id -1 and NaN errors when not found).
     \exception vpException (ioError) naming the file when an image or truth file cannot be read.

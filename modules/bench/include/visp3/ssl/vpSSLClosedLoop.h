@@ -81,12 +81,21 @@ public:
   //! One logged control step.
   struct Row
   {
-    //! Time (s), inputs, ranges (m), yaw demand and rate, heading (deg), depth, lateral offset, target y (m),
-    //! collision.
-    double t, nbPoints, estRange, trueRange, yawDemand, yawRate, heading, depth, lateral, targetY, collision;
-    double yRelEst, yRelTrue; //!< Target centre's y (starboard) in the vehicle frame: measured, and true (m).
-    vpSSLHomingState state;
-    bool seen; //!< The behaviour saw the target at this step (vpSSLHomingBehaviour::getTargetSeen()).
+    double t;               //!< Time (s).
+    double nbPoints;        //!< Measured points of the input (0 when the target is not seen).
+    double estRange;        //!< Range the behaviour uses (m).
+    double trueRange;       //!< True camera-to-target depth (m; NaN when the target is out of the water).
+    double yawDemand;       //!< Yaw rate commanded (rad/s).
+    double yawRate;         //!< Yaw rate of the vehicle (rad/s).
+    double heading;         //!< Vehicle heading (deg).
+    double depth;           //!< Vehicle depth (m).
+    double lateral;         //!< Vehicle's offset from the target along the world y axis (m).
+    double targetY;         //!< Target's displacement from its start along the world y axis (m).
+    double collision;       //!< 1 when the front collision sensor trips, else 0.
+    double yRelEst;         //!< Target centre's y (starboard) in the vehicle frame, measured (m).
+    double yRelTrue;        //!< The same point's y at the true pose (m).
+    vpSSLHomingState state; //!< Behaviour state after the step.
+    bool seen;              //!< The behaviour saw the target at this step (vpSSLHomingBehaviour::getTargetSeen()).
   };
 
   /*!

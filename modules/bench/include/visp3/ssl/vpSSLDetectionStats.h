@@ -30,7 +30,7 @@ struct vpSSLFrameResult
   //! Whether the pose's orientation is estimated. False for a position-only pose (the SSL tracker after one
   //! landmark alone): its rotation is a placeholder, so its angle error is left out of the statistics.
   bool orientationKnown = true;
-  double timeMs = std::numeric_limits<double>::quiet_NaN();
+  double timeMs = std::numeric_limits<double>::quiet_NaN(); //!< Detection time of the frame (ms).
 };
 
 /*!
@@ -42,18 +42,21 @@ struct vpSSLFrameResult
 class vpSSLDetectionStats
 {
 public:
-  size_t nbFrames = 0;              //!< Frames processed.
-  size_t nbWithTarget = 0;          //!< Frames with the target in view (when known).
-  size_t nbDetected = 0;            //!< Of those, frames where the method found it.
-  size_t nbUnknown = 0;             //!< Frames where presence is unknown (recordings without truth).
-  size_t nbUnknownDetected = 0;     //!< Of those, frames where the method reported its target.
-  size_t nbNoTarget = 0;            //!< Frames known to show no target.
-  size_t nbFalse = 0;               //!< False detections (on any frame).
-  size_t nbPositionOnly = 0;        //!< Detected frames with the target whose pose is position-only (no angle error).
-  std::vector<size_t> bandFrames;   //!< Frames with the target per range band.
-  std::vector<size_t> bandDetected; //!< Of those, detected frames per range band.
-  //! Per frame with target, for the medians: range, centre, position and angle errors; time of every frame.
-  std::vector<double> range, centre, position, angle, time;
+  size_t nbFrames = 0;               //!< Frames processed.
+  size_t nbWithTarget = 0;           //!< Frames with the target in view (when known).
+  size_t nbDetected = 0;             //!< Of those, frames where the method found it.
+  size_t nbUnknown = 0;              //!< Frames where presence is unknown (recordings without truth).
+  size_t nbUnknownDetected = 0;      //!< Of those, frames where the method reported its target.
+  size_t nbNoTarget = 0;             //!< Frames known to show no target.
+  size_t nbFalse = 0;                //!< False detections (on any frame).
+  size_t nbPositionOnly = 0;         //!< Detected frames with the target whose pose is position-only (no angle error).
+  std::vector<size_t> bandFrames;    //!< Frames with the target per range band.
+  std::vector<size_t> bandDetected;  //!< Of those, detected frames per range band.
+  std::vector<double> range;         //!< Per frame with target: true range (m).
+  std::vector<double> centre;        //!< Per frame with target: centre error (vpSSLFrameResult::centreError).
+  std::vector<double> position;      //!< Per frame with target: position error (vpSSLFrameResult::positionError).
+  std::vector<double> angle;         //!< Per frame with target: angle error (deg; NaN when the orientation is unknown).
+  std::vector<double> time;          //!< Per frame: detection time (ms).
   std::vector<double> detectedRange; //!< Range of every frame with target (detected or not).
   std::vector<char> detectedFlag;    //!< Whether each frame of detectedRange was detected.
 
