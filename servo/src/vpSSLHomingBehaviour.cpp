@@ -310,6 +310,7 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
   double xc, yc, Zc;
   const bool usable = vpSSLServoLaw::getTargetCentre(input, xc, yc, Zc);
   m_range = Zc;
+  const double previousRange = m_lastRange;
   if (usable) {
     m_lastRange = Zc;
   }
@@ -412,13 +413,15 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
       m_law.setStandOff(m_standOff);
       v = m_law.computeControlLaw(input);
       if (m_rangeIntegralGain > 0. && m_law.getStatus() == SSL_SERVO_OK && m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
-        // Integrates only near the stand-off (within half of it), so that the approach from afar winds nothing
-        // up, and bounded so that the integral alone asks for at most half the surge limit.
+        // Integrates only once the proportional law has settled (within half the stand-off of it, the range
+        // changing by less than 5 cm/s), so that neither the approach from afar nor the overshoot of a fast one
+        // winds anything up; bounded so that the integral alone asks for at most half the surge limit.
         const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
         const double error = Zc - m_standOff;
-        if (std::fabs(error) < 0.5 * m_standOff) {
-          m_rangeIntegral =
-              clamp(m_rangeIntegral + error * (m_time - m_previousTime), 0.5 * vmax / m_rangeIntegralGain);
+        const double dt = m_time - m_previousTime;
+        const bool settled = dt > 0. && std::fabs(Zc - previousRange) < 0.05 * dt;
+        if (settled && std::fabs(error) < 0.5 * m_standOff) {
+          m_rangeIntegral = clamp(m_rangeIntegral + error * dt, 0.5 * vmax / m_rangeIntegralGain);
         }
         v[SSL_AXIS_SURGE] = clamp(v[SSL_AXIS_SURGE] + m_rangeIntegralGain * m_rangeIntegral, vmax);
       }
