@@ -9,6 +9,8 @@
 #include <vector>
 
 #include <visp3/core/vpImage.h>
+
+#include "vpSSLImageBuffer.h"
 #include <visp3/core/vpRect.h>
 #include <visp3/ssl/vpSSLBrightnessNormalizer.h>
 #include <visp3/ssl/vpSSLConcentricReader.h>
@@ -69,7 +71,7 @@ private:
   // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
   struct MatchMap
   {
-    vpImage<int> map;
+    vpSSLImageBuffer<int> map;
     std::vector<vpRect> written;
     bool allWritten = true; // whether the last call wrote the whole map (or it is uninitialised)
   };
@@ -118,13 +120,13 @@ private:
   std::vector<vpRect> m_noRois; // always empty: the whole image
   bool m_lastSearchWasFull;
 
-  vpImage<unsigned char> m_normalized;
-  vpImage<unsigned char> m_upsampled;
-  vpImage<unsigned char> m_decimated;  // normalised, decimated image (decimation 2)
-  vpImage<unsigned char> m_sweepRow;   // one normalised full-resolution row, for the Eq. 7 sweep
-  unsigned char m_lut[256];            // normalisation table of the last frame
-  int m_offsetA[129], m_offsetB[129];  // a_xi, b_xi of the full-resolution window (refinePeak())
-  std::vector<vpImagePoint> m_refined; // full-resolution peaks already read this frame
+  vpSSLImageBuffer<unsigned char> m_normalized;
+  vpSSLImageBuffer<unsigned char> m_upsampled;
+  vpSSLImageBuffer<unsigned char> m_decimated; // normalised, decimated image (decimation 2)
+  vpSSLImageBuffer<unsigned char> m_sweepRow;  // one normalised full-resolution row, for the Eq. 7 sweep
+  unsigned char m_lut[256];                    // normalisation table of the last frame
+  int m_offsetA[129], m_offsetB[129];          // a_xi, b_xi of the full-resolution window (refinePeak())
+  std::vector<vpImagePoint> m_refined;         // full-resolution peaks already read this frame
   // Normalised pixels around a decimated peak (refinePeak()): rows (row-major) and columns (column-major).
   std::vector<unsigned char> m_crossRows, m_crossCols;
   int m_crossU0 = 0, m_crossV0 = 0, m_crossW = 0, m_crossCu0 = 0, m_crossCv0 = 0, m_crossH = 0;
