@@ -18,6 +18,13 @@ namespace {
 const unsigned int kSmallModeWindow = 20;
 // Smallest apparent radius read (px): below it the rings are thinner than a pixel.
 const double kMinRadius = 4.;
+// Short window of a full search (vpSSLDetector::setShortWindow()): the response of w = 40 fades below a radius of
+// about 28 px, and w = 10 answers from 7 px up, for a quarter of its matching cost.
+const unsigned int kShortWindow = 10;
+// Peaks of the short window's map read per frame: its strongest few. On textured surroundings the short window
+// has many more peaks over the threshold than w = 40, and the 16 strongest find every small landmark the 64
+// strongest do on the independent corpus (doc/detector.md).
+const unsigned int kShortWindowPeaks = 16;
 
 // Twice the resolution, bilinear, pixel centres kept: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...), edges
 // repeated. Output row v mixes input rows (v - 1) / 2 and the next one, 3:1 for odd v and 1:3 for even v.
@@ -87,9 +94,11 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
     : m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(), m_identifier(target),
       m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
-      m_matchCoarse(coarseWindow(40), target.getP()), m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.10),
-      m_planner(), m_noRois(), m_lastSearchWasFull(true)
+      m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
+      m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_maxRadius(300.), m_radiusSweep(false),
+      m_threshold(0.10), m_planner(), m_noRois(), m_lastSearchWasFull(true)
 {
+  m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
   m_radiusEstimator.setP(target.getP());
   m_concentricReader.setP(target.getP());
 }
@@ -108,6 +117,14 @@ void vpSSLDetectionPipeline::setSmallLandmarkMode(bool enable)
 {
   m_upsample = enable;
   m_match.setWindow(enable ? kSmallModeWindow : m_window);
+}
+
+void vpSSLDetectionPipeline::setShortWindow(unsigned int w)
+{
+  if (w != 0) {
+    m_matchShort.setWindow(w); // checks w
+  }
+  m_shortWindow = w;
 }
 
 void vpSSLDetectionPipeline::setDecimation(unsigned int decimation)
@@ -340,6 +357,9 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
     m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
     m_peakDetector.detect(map.map, m_peaks, *rois);
     m_times.peaks += elapsedMs(t);
+    if (full && m_shortWindow != 0 && !m_upsample) {
+      addShortWindowPeaks(*In, maxValue, t);
+    }
   }
 
   for (const vpSSLPeak &peak : m_peaks) {
@@ -411,6 +431,27 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
     keepLandmark(l, *raw, *In, coarse || partialNormalization, scale);
   }
   m_times.radius += elapsedMs(t);
+}
+
+void vpSSLDetectionPipeline::addShortWindowPeaks(const vpImage<unsigned char> &normalized, int mainMax,
+                                                 std::chrono::steady_clock::time_point &t)
+{
+  m_matchShort.compute(normalized, m_shortMap);
+  m_times.matching += elapsedMs(t);
+  const int shortMax = m_matchShort.getMaxValue();
+  m_shortPeakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * shortMax))));
+  m_shortPeakDetector.detect(m_shortMap, m_shortPeaks, m_noRois);
+  // One scale for both maps' peaks: the score (Eq. 5) over its largest value. A landmark big enough for both
+  // windows gives a peak in each; the second is skipped as inside the first one read.
+  for (vpSSLPeak p : m_shortPeaks) {
+    p.value = static_cast<int>(static_cast<long long>(p.value) * mainMax / shortMax);
+    m_peaks.push_back(p);
+  }
+  // Strongest first, ties in row-major order: std::sort allocates nothing, and the order is total.
+  std::sort(m_peaks.begin(), m_peaks.end(), [](const vpSSLPeak &a, const vpSSLPeak &b) {
+    return a.value != b.value ? a.value > b.value : (a.v != b.v ? a.v < b.v : a.u < b.u);
+  });
+  m_times.peaks += elapsedMs(t);
 }
 
 bool vpSSLDetectionPipeline::insideFound(double u, double v) const

@@ -43,11 +43,13 @@ public:
   {
     m_match.setNbThreads(n);
     m_matchCoarse.setNbThreads(n);
+    m_matchShort.setNbThreads(n);
   }
   void setDecimation(unsigned int decimation);
   void setMaxRadius(double r);
   void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
   void setSmallLandmarkMode(bool enable);
+  void setShortWindow(unsigned int w);
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
 
   unsigned int getWindow() const { return m_window; }
@@ -56,6 +58,7 @@ public:
   unsigned int getDecimation() const { return m_decimation; }
   bool getRadiusSweep() const { return m_radiusSweep; }
   bool getSmallLandmarkMode() const { return m_upsample; }
+  unsigned int getShortWindow() const { return m_shortWindow; }
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
   bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
 
@@ -100,6 +103,10 @@ private:
   // deferred to the matching (vpSSLRegionPlanner::getPending()).
   void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
   double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
+  // Full search at full resolution: adds the strongest peaks of the short window's map of the normalised image to
+  // m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first.
+  void addShortWindowPeaks(const vpImage<unsigned char> &normalized, int mainMax,
+                           std::chrono::steady_clock::time_point &t);
 
   vpSSLBrightnessNormalizer m_normalizer;
   vpSSLMatchingFunction m_match;
@@ -113,6 +120,9 @@ private:
   unsigned int m_window;
   unsigned int m_decimation;
   vpSSLMatchingFunction m_matchCoarse; // window 0.35 w, on the decimated image
+  unsigned int m_shortWindow;          // 0: no short-window map
+  vpSSLMatchingFunction m_matchShort;  // the short window, full searches at full resolution
+  vpSSLPeakDetector m_shortPeakDetector;
   double m_maxRadius;
   bool m_radiusSweep;
   double m_threshold;
@@ -135,6 +145,8 @@ private:
   MatchMap m_mainMap;   // the map of getMatchingMap()
   MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
   std::vector<vpSSLPeak> m_peaks;
+  std::vector<vpSSLPeak> m_shortPeaks;
+  vpSSLImageBuffer<int> m_shortMap;
   std::vector<vpSSLLandmark> m_landmarks;
   std::vector<int> m_sweep; // Eq. 7 sweep, reused
   vpSSLTargetMatch m_targetMatch;

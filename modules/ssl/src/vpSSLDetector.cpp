@@ -71,6 +71,14 @@ bool vpSSLDetector::getSmallLandmarkMode() const
 {
   return m_impl->getSmallLandmarkMode();
 }
+void vpSSLDetector::setShortWindow(unsigned int w)
+{
+  m_impl->setShortWindow(w);
+}
+unsigned int vpSSLDetector::getShortWindow() const
+{
+  return m_impl->getShortWindow();
+}
 void vpSSLDetector::setRegionsOfInterest(const std::vector<vpRect> &rois)
 {
   m_impl->setRegionsOfInterest(rois);

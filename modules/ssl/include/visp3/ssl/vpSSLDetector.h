@@ -88,6 +88,18 @@ public:
 
   //! Window length w of the matching function (default 40, paper Sec. 2.1).
   void setWindow(unsigned int w);
+  /*!
+    Short window of a full search (default 10; 0: none). The matching function's response to a landmark fades once
+    the window exceeds about 1.4 times its apparent radius, so w = 40 gives no peak at the centre of landmarks under
+    about 28 px. A full search at full resolution (setDecimation(1), not the small-landmark mode) also matches the
+    normalised image with this window, from 7 px of radius up for w = 10, at a quarter of the cost of w = 40, and
+    reads the 16 strongest peaks of that map with those of w = 40, strongest first (the scores of both maps on the
+    same scale). Tracking frames (setRegionsOfInterest()) use w alone.
+    \exception vpException unless 0 or in [2, 128].
+  */
+  void setShortWindow(unsigned int w);
+  //! Short window of a full search (setShortWindow()), 0 if none.
+  unsigned int getShortWindow() const;
   //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.10).
   void setThreshold(double threshold);
   //! Brightness normalisation before matching (default on, paper Fig. 13).
