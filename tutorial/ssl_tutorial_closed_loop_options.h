@@ -30,16 +30,16 @@ struct ClosedLoopOutputOptions
   */
   template <typename Value> bool parseOutputOption(const std::string &a, const Value &value, long long maxSide)
   {
-    if (a == "--output-dir") {
+    if (a == "--small") {
+      small = true;
+    } else if (a == "--quiet") {
+      quiet = true;
+    } else if (a == "--output-dir") {
       outputDir = value();
     } else if (a == "--width") {
       width = static_cast<unsigned int>(parseInteger(a, value(), 64, maxSide));
     } else if (a == "--height") {
       height = static_cast<unsigned int>(parseInteger(a, value(), 48, maxSide));
-    } else if (a == "--small") {
-      small = true;
-    } else if (a == "--quiet") {
-      quiet = true;
     } else {
       return false;
     }

@@ -49,7 +49,8 @@ struct Options
 // The command line into \e o; false after --help, the usage printed.
 bool parse(int argc, char **argv, Options &o)
 {
-  const bool go = ssltut::readOptions(argc, argv, kUsage, [&](const std::string &a, const auto &value) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--steps") {
       o.steps = static_cast<long>(ssltut::parseInteger(a, value(), 1, 100000));
     } else if (a == "--stand-off") {
@@ -58,8 +59,8 @@ bool parse(int argc, char **argv, Options &o)
       return false;
     }
     return true;
-  });
-  return go;
+  };
+  return ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
 }
 
 /*

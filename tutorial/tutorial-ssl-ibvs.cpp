@@ -90,7 +90,8 @@ vpHomogeneousMatrix parsePose(const std::string &name, const std::string &text)
 // The command line into \e o; false after --help, the usage printed.
 bool parse(int argc, char **argv, Options &o)
 {
-  const bool go = ssltut::readOptions(argc, argv, kUsage, [&](const std::string &a, const auto &value) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--stand-off") {
       o.standOff = ssltut::parseNumber(a, value(), 0.5, 2.);
     } else if (a == "--start") {
@@ -119,8 +120,8 @@ bool parse(int argc, char **argv, Options &o)
       return false;
     }
     return true;
-  });
-  return go;
+  };
+  return ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
 }
 
 // The image, the tracked landmarks, the target frame and the state, for the window or the PNGs.

@@ -136,7 +136,8 @@ std::vector<vpSSLClosedLoop::Method> parseMethods(const std::string &text)
 // The command line into \e o; false after --help, the usage printed.
 bool parse(int argc, char **argv, Options &o)
 {
-  const bool go = ssltut::readOptions(argc, argv, kUsage, [&](const std::string &a, const auto &value) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--runs") {
       o.runs = parseInteger(a, value(), 1, 10000);
     } else if (a == "--seed") {
@@ -194,7 +195,8 @@ bool parse(int argc, char **argv, Options &o)
       return false;
     }
     return true;
-  });
+  };
+  const bool go = ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
   o.applySmall();
   return go;
 }

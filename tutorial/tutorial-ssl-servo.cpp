@@ -69,7 +69,8 @@ struct Options : ssltut::ClosedLoopOutputOptions
 // The command line into \e o; false after --help, the usage printed.
 bool parse(int argc, char **argv, Options &o)
 {
-  const bool go = ssltut::readOptions(argc, argv, kUsage, [&](const std::string &a, const auto &value) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--scenario") {
       o.scenario = value();
       if (o.scenario != "fig7" && o.scenario != "fig8" && o.scenario != "fig9" && o.scenario != "field") {
@@ -98,7 +99,8 @@ bool parse(int argc, char **argv, Options &o)
       return false;
     }
     return true;
-  });
+  };
+  const bool go = ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
   o.applySmall();
   if (o.supersampling < 0) {
     o.supersampling = 1; // one ray per pixel keeps a 300 s fig7 run at 640x480 within a couple of minutes
