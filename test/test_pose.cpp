@@ -26,6 +26,20 @@ vpCameraParameters camera()
   return vpCameraParameters(800., 800., 319.6, 240.3);
 }
 
+// The scene of the rendered-view tests: a target (ssl3-a3 unless told) rendered through camera() at 640x480, and a
+// detector of it with its defaults. A test names its parts with a structured binding.
+struct Scene
+{
+  explicit Scene(const vpSSLTarget &t = vpSSLTarget::ssl3a3()) : target(t), renderer(cam, 640, 480), detector(t)
+  {
+    renderer.setTarget(target);
+  }
+  const vpSSLTarget target;
+  const vpCameraParameters cam = camera();
+  vpSSLRenderer renderer;
+  vpSSLDetector detector;
+};
+
 double angleDeg(const vpHomogeneousMatrix &A, const vpHomogeneousMatrix &B)
 {
   return vpMath::deg(vpThetaUVector((A.inverse() * B).getRotationMatrix()).getTheta());
@@ -145,11 +159,8 @@ TEST(Pose, P3PHypothesesAreInFrontOfTheCameraAndContainTheTruth)
 
 TEST(Pose, ThreeLandmarkPoseOnRenderedViews)
 {
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  const vpCameraParameters cam = camera();
-  vpSSLRenderer renderer(cam, 640, 480);
-  renderer.setTarget(target);
-  vpSSLDetector detector(target);
+  Scene scene;
+  auto &[target, cam, renderer, detector] = scene;
   detector.setSmallLandmarkMode(true);
   vpSSLPoseEstimator estimator(target);
   const struct
@@ -192,11 +203,8 @@ TEST(Pose, OneLandmarkRangeFromApparentRadius)
 {
   // Paper case 1, Eq. 6: one landmark read in a rendered image; its centre's position comes back.
   const double R = 0.1;
-  const vpSSLTarget target = sslt::singleLandmarkTarget(R);
-  const vpCameraParameters cam = camera();
-  vpSSLRenderer renderer(cam, 640, 480);
-  renderer.setTarget(target);
-  vpSSLDetector detector(target);
+  Scene scene(sslt::singleLandmarkTarget(R));
+  auto &[target, cam, renderer, detector] = scene;
   vpSSLPoseEstimator estimator(target);
   for (double range : {1.5, 3., 5.}) {
     const vpHomogeneousMatrix gt = sslt::lookAt(range, 5., 30., 10.) * vpHomogeneousMatrix(0.08, -0.05, 0, 0, 0, 0);
@@ -276,11 +284,8 @@ TEST(Pose, BadInputThrows)
 TEST(Pose, EllipseAgreementPicksTheTruePoseOnTheFirstFrame)
 {
   const bool full = std::getenv("SSL_POSE_GRID") != nullptr && std::string(std::getenv("SSL_POSE_GRID")) == "full";
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  const vpCameraParameters cam = camera();
-  vpSSLRenderer renderer(cam, 640, 480);
-  renderer.setTarget(target);
-  vpSSLDetector detector(target);
+  Scene scene;
+  auto &[target, cam, renderer, detector] = scene;
   detector.setSmallLandmarkMode(true);
   vpSSLPoseEstimator ranked(target), paper(target);
   paper.setImageAgreement(false);
@@ -350,11 +355,8 @@ TEST(Pose, EllipseAgreementPicksTheTruePoseOnTheFirstFrame)
 // among the P3P hypotheses the ranking puts it first, and it is never worse than reprojection alone.
 TEST(Pose, RankingPicksTheTruePoseOnNoisyUnderwaterDetections)
 {
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  const vpCameraParameters cam = camera();
-  vpSSLRenderer renderer(cam, 640, 480);
-  renderer.setTarget(target);
-  vpSSLDetector detector(target);
+  Scene scene;
+  auto &[target, cam, renderer, detector] = scene;
   detector.setSmallLandmarkMode(true);
   vpSSLPoseEstimator ranked(target), paper(target);
   paper.setImageAgreement(false);
@@ -415,11 +417,8 @@ TEST(DetectorPose, TargetSeenByItsBigLandmarkOnlyGivesNoFullPose)
 {
   // ssl3-a3 at 3 m through an 800 px camera: the small landmarks (13 px of radius) give w = 40 no peak, so with the
   // short window off only B is read, and the pose is not given.
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  const vpCameraParameters cam = camera();
-  vpSSLRenderer renderer(cam, 640, 480);
-  renderer.setTarget(target);
-  vpSSLDetector detector(target);
+  Scene scene;
+  auto &[target, cam, renderer, detector] = scene;
   detector.setShortWindow(0);
   const vpHomogeneousMatrix gt = sslt::lookAt(3., 10., 0., 0.);
   vpImage<unsigned char> I;

@@ -44,13 +44,26 @@ inline long long parseInteger(const std::string &name, const std::string &text, 
 }
 
 /*!
-  The value of the option at argv[i], which is argv[i + 1]; \e i moves on to it.
-  \exception UsageError "OPTION needs a value" when the option is the last argument.
+  How a tutorial words an option given without its value; each keeps the words its tests and users know.
 */
-inline std::string optionValue(int argc, char **argv, int &i)
+enum class MissingValue
+{
+  Short,   //!< "OPTION needs a value"
+  SeeHelp, //!< "option OPTION needs a value (see --help)"
+  Colon    //!< "OPTION: missing value"
+};
+
+/*!
+  The value of the option at argv[i], which is argv[i + 1]; \e i moves on to it.
+  \exception UsageError worded as \e words says when the option is the last argument.
+*/
+inline std::string optionValue(int argc, char **argv, int &i, MissingValue words = MissingValue::Short)
 {
   if (i + 1 >= argc) {
-    throw UsageError(std::string(argv[i]) + " needs a value");
+    const std::string name = argv[i];
+    throw UsageError(words == MissingValue::SeeHelp ? "option " + name + " needs a value (see --help)"
+                     : words == MissingValue::Colon ? name + ": missing value"
+                                                    : name + " needs a value");
   }
   return argv[++i];
 }

@@ -18,6 +18,7 @@
 #include <visp3/ssl/vpSSLTracker.h>
 
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 #include <visp3/ssl/vpSSLRobotAuvTemplate.h>
 
 namespace {
@@ -45,24 +46,21 @@ struct Options
   double standOff = 2.;
 };
 
-Options parse(int argc, char **argv, bool &help)
+// The command line into \e o; false after --help, the usage printed.
+bool parse(int argc, char **argv, Options &o)
 {
-  Options o;
-  help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&] { return ssltut::optionValue(argc, argv, i); };
-    if (a == "--help" || a == "-h") {
-      help = true;
-    } else if (a == "--steps") {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (a == "--steps") {
       o.steps = static_cast<long>(ssltut::parseInteger(a, value(), 1, 100000));
     } else if (a == "--stand-off") {
       o.standOff = ssltut::parseNumber(a, value(), 1., 3.);
     } else {
-      throw ssltut::UsageError("unknown option " + a + " (see --help)");
+      return false;
     }
-  }
-  return o;
+    return true;
+  };
+  return ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
 }
 
 /*
@@ -109,11 +107,9 @@ private:
 int main(int argc, char **argv)
 {
   return ssltut::guardedMain(kProgram, [&]() -> int {
-    bool help = false;
-    const Options o = parse(argc, argv, help);
-    if (help) {
-      std::cout << kUsage;
-      return 0;
+    Options o;
+    if (!parse(argc, argv, o)) {
+      return 0; // --help
     }
 
     // The camera, 320x240 (the project's 640x480 camera scaled by half), forward-looking 0.5 m ahead.

@@ -18,9 +18,11 @@
 #include <visp3/sensor/vpV4l2Grabber.h>
 #endif
 
+#include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_canvas.h"
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_input.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kProgram = "tutorial-ssl-detector-live";
@@ -67,43 +69,31 @@ int run(int argc, char **argv)
 {
   const std::string data = ssltut::dataDir();
   std::string opt_input = "/dev/video0";
-  std::string intrinsic_file = data + "/camera/camera-640x480.xml";
-  std::string camera_name = "Camera";
-  std::string target_name = "ssl3-a3";
+  ssltut::CameraTargetOptions camera(data + "/camera/camera-640x480.xml", "--intrinsic", "--camera-name");
   std::string output_dir = "ssl-detector-live";
   long max_frames = -1;
 
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
-      }
-      return argv[++i];
-    };
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--input") {
       opt_input = value();
-    } else if (a == "--intrinsic") {
-      intrinsic_file = value();
-    } else if (a == "--camera-name") {
-      camera_name = value();
-    } else if (a == "--target") {
-      target_name = value();
+    } else if (camera.parseCameraOption(a, value)) {
     } else if (a == "--max-frames") {
       max_frames = static_cast<long>(ssltut::parseInteger(a, value(), 1, 1000000000));
     } else if (a == "--output") {
       output_dir = value();
-    } else if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return EXIT_SUCCESS;
     } else {
-      throw ssltut::UsageError("unknown option \"" + a + "\" (see --help)");
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
 
   vpCameraParameters cam;
   vpSSLTarget target;
-  ssltut::loadCameraAndTarget(intrinsic_file, camera_name, target_name, cam, target);
+  ssltut::loadCameraAndTarget(camera.cameraFile, camera.cameraName, camera.targetName, cam, target);
 
   // The grabber: ViSP's V4L2 grabber for /dev/video*, OpenCV for the rest (other cameras, video files).
   vpImage<unsigned char> I;

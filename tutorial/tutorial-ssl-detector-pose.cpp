@@ -14,9 +14,11 @@
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLImageIo.h>
 
+#include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_canvas.h"
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_input.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kProgram = "tutorial-ssl-detector-pose";
@@ -58,39 +60,26 @@ int run(int argc, char **argv)
 {
   const std::string data = ssltut::dataDir();
   std::string input_filename = data + "/images/ssl3-a3-00.png";
-  std::string target_name = "ssl3-a3";
   unsigned int window = 40;
   bool small_landmarks = false;
   unsigned int nThreads = 0;
-  std::string intrinsic_file = data + "/camera/camera-640x480.xml";
-  std::string camera_name = "Camera";
+  ssltut::CameraTargetOptions camera(data + "/camera/camera-640x480.xml", "--intrinsic", "--camera_name");
   bool display_tag = false;
   int color_id = -1;
   unsigned int thickness = 2;
   std::string output_dir = "ssl-detector-pose";
 
-  for (int i = 1; i < argc; i++) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
-      }
-      return argv[++i];
-    };
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     if (a == "--input") {
       input_filename = value();
-    } else if (a == "--target") {
-      target_name = value();
+    } else if (camera.parseCameraOption(a, value)) {
     } else if (a == "--window") {
       window = static_cast<unsigned int>(ssltut::parseInteger(a, value(), 2, 128));
     } else if (a == "--small_landmarks") {
       small_landmarks = true;
     } else if (a == "--nthreads") {
       nThreads = ssltut::parseThreads(a, value(), true, 256);
-    } else if (a == "--intrinsic") {
-      intrinsic_file = value();
-    } else if (a == "--camera_name") {
-      camera_name = value();
     } else if (a == "--display_tag") {
       display_tag = true;
     } else if (a == "--color") {
@@ -99,17 +88,18 @@ int run(int argc, char **argv)
       thickness = static_cast<unsigned int>(ssltut::parseInteger(a, value(), 1, 20));
     } else if (a == "--output") {
       output_dir = value();
-    } else if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return EXIT_SUCCESS;
     } else {
-      throw ssltut::UsageError("unknown option \"" + a + "\" (see --help)");
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
 
   vpCameraParameters cam;
   vpSSLTarget target;
-  ssltut::loadCameraAndTarget(intrinsic_file, camera_name, target_name, cam, target);
+  ssltut::loadCameraAndTarget(camera.cameraFile, camera.cameraName, camera.targetName, cam, target);
 
   std::cout << "Input: " << input_filename << std::endl;
   std::cout << cam << std::endl;

@@ -20,8 +20,10 @@
 #include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
 
+#include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_input.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-detector --input IMAGE_OR_PATTERN_OR_VIDEO [options]
@@ -200,34 +202,21 @@ long firstFrame(const std::string &pattern)
 
 int run(int argc, char **argv)
 {
-  std::string input, cameraFile, cameraName = "Camera", targetName = "ssl3-a3", outputDir;
+  std::string input, outputDir;
+  ssltut::CameraTargetOptions camera;
   bool json = false, display = false, normalize = true, smallLandmarks = false;
   unsigned int window = 40, threads = 0;
   double threshold = 0.10;
   long maxFrames = -1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        fail("option " + a + " needs a value (see --help)", 2);
-      }
-      return argv[++i];
-    };
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     auto number = [&](const std::string &v) { return ssltut::parseNumber("option " + a, v); };
     auto integer = [&](const std::string &v, long long lo, long long hi) {
       return ssltut::parseInteger("option " + a, v, lo, hi);
     };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
+    if (camera.parseCameraOption(a, value)) {
     } else if (a == "--input") {
       input = value();
-    } else if (a == "--camera") {
-      cameraFile = value();
-    } else if (a == "--camera-name") {
-      cameraName = value();
-    } else if (a == "--target") {
-      targetName = value();
     } else if (a == "--json") {
       json = true;
     } else if (a == "--output") {
@@ -247,8 +236,12 @@ int run(int argc, char **argv)
     } else if (a == "--max-frames") {
       maxFrames = static_cast<long>(integer(value(), 0, 1000000000));
     } else {
-      fail("unknown option \"" + a + "\" (see --help)", 2);
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
   if (input.empty()) {
     fail("--input is required (see --help)", 2);
@@ -290,12 +283,12 @@ int run(int argc, char **argv)
   bool haveCamera = false;
   vpSSLTarget target;
   try {
-    target = vpSSLTarget::fromName(targetName);
+    target = vpSSLTarget::fromName(camera.targetName);
     vpSSLDetector check(target); // the settings' own checks, with their messages
     check.setWindow(window);
     check.setThreshold(threshold);
-    if (!cameraFile.empty()) {
-      cam = vpSSLCameraFile::load(cameraFile, cameraName);
+    if (!camera.cameraFile.empty()) {
+      cam = vpSSLCameraFile::load(camera.cameraFile, camera.cameraName);
       haveCamera = true;
     }
   } catch (const vpException &e) {

@@ -25,6 +25,7 @@
 #include <visp3/ssl/vpSSLTracker.h>
 
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kProgram = "tutorial-ssl-ibvs";
@@ -86,16 +87,12 @@ vpHomogeneousMatrix parsePose(const std::string &name, const std::string &text)
   return vpHomogeneousMatrix(v[0], v[1], v[2], vpMath::rad(v[3]), vpMath::rad(v[4]), vpMath::rad(v[5]));
 }
 
-Options parse(int argc, char **argv, bool &help)
+// The command line into \e o; false after --help, the usage printed.
+bool parse(int argc, char **argv, Options &o)
 {
-  Options o;
-  help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&] { return ssltut::optionValue(argc, argv, i); };
-    if (a == "--help" || a == "-h") {
-      help = true;
-    } else if (a == "--stand-off") {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (a == "--stand-off") {
       o.standOff = ssltut::parseNumber(a, value(), 0.5, 2.);
     } else if (a == "--start") {
       o.cMo = parsePose(a, value());
@@ -120,10 +117,11 @@ Options parse(int argc, char **argv, bool &help)
     } else if (a == "--save-every") {
       o.saveEvery = static_cast<long>(ssltut::parseInteger(a, value(), 1, 100000));
     } else {
-      throw ssltut::UsageError("unknown option " + a + " (see --help)");
+      return false;
     }
-  }
-  return o;
+    return true;
+  };
+  return ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
 }
 
 // The image, the tracked landmarks, the target frame and the state, for the window or the PNGs.
@@ -147,11 +145,9 @@ void annotate(const vpImage<unsigned char> &I, vpSSLTracker &tracker, const vpCa
 int main(int argc, char **argv)
 {
   return ssltut::guardedMain(kProgram, [&]() -> int {
-    bool help = false;
-    Options o = parse(argc, argv, help);
-    if (help) {
-      std::cout << kUsage;
-      return 0;
+    Options o;
+    if (!parse(argc, argv, o)) {
+      return 0; // --help
     }
 
     // The camera: the project's default 640x480 camera, or the same field of view at 320x240.

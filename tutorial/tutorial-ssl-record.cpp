@@ -19,6 +19,7 @@
 
 #include "ssl_recording_common.h"
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-record --input VIDEO|PATTERN|DEVICE --camera XML --output DIR [options]
@@ -88,18 +89,9 @@ int run(int argc, char **argv)
   ssltut::RecordingOptions recording;
   double rate = 0., startTime = 0.;
   long long first = 0, frames = -1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
-      }
-      return argv[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (recording.parse(a, value)) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (recording.parse(a, value)) {
     } else if (a == "--input") {
       input = value();
     } else if (a == "--camera") {
@@ -117,8 +109,12 @@ int run(int argc, char **argv)
     } else if (a == "--frames") {
       frames = ssltut::parseInteger("option " + a, value(), 1, 100000000);
     } else {
-      throw ssltut::UsageError("unknown option \"" + a + "\" (see --help)");
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
   if (input.empty() || cameraXml.empty() || recording.output.empty()) {
     throw ssltut::UsageError("--input, --camera and --output are required (see --help)");

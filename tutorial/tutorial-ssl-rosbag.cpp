@@ -10,6 +10,7 @@
 
 #include "ssl_recording_common.h"
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-rosbag --bag FILE --list
@@ -58,18 +59,9 @@ int run(int argc, char **argv)
   ssltut::RecordingOptions recording;
   vpSSLRosbagReader::vpOdometryConvention axes = vpSSLRosbagReader::ODOMETRY_REP103;
   long long maxFrames = -1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
-      }
-      return argv[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (recording.parse(a, value)) {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (recording.parse(a, value)) {
     } else if (a == "--bag") {
       bag = value();
     } else if (a == "--list") {
@@ -89,8 +81,12 @@ int run(int argc, char **argv)
     } else if (a == "--max-frames") {
       maxFrames = ssltut::parseInteger("option " + a, value(), 1, 100000000);
     } else {
-      throw ssltut::UsageError("unknown option \"" + a + "\" (see --help)");
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
   if (bag.empty()) {
     throw ssltut::UsageError("--bag is required (see --help)");

@@ -33,7 +33,9 @@
 #include <visp3/ssl/vpSSLPlot.h>
 #include <visp3/ssl/vpSSLScenario.h>
 
+#include "ssl_tutorial_closed_loop_options.h"
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 using ssltut::parseInteger;
@@ -93,7 +95,7 @@ current_dir_deg, stand_off, start_range, docked, time_to_dock, standoff_rms, set
 collisions_outside_dock, lost_events, final_state, sim_time, start_in_view, failure.
 )";
 
-struct Options
+struct Options : ssltut::ClosedLoopOutputOptions
 {
   long runs = 20;
   long seed = 1;
@@ -108,10 +110,6 @@ struct Options
   bool stationKeeping = false;
   long threads = 2;
   bool traces = false;
-  std::string outputDir = ".";
-  unsigned int width = 640, height = 480;
-  bool small = false;
-  bool quiet = false;
 };
 
 std::vector<vpSSLClosedLoop::Method> parseMethods(const std::string &text)
@@ -135,16 +133,12 @@ std::vector<vpSSLClosedLoop::Method> parseMethods(const std::string &text)
   return methods;
 }
 
-Options parse(int argc, char **argv, bool &help)
+// The command line into \e o; false after --help, the usage printed.
+bool parse(int argc, char **argv, Options &o)
 {
-  Options o;
-  help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() { return ssltut::optionValue(argc, argv, i); };
-    if (a == "--help" || a == "-h") {
-      help = true;
-    } else if (a == "--runs") {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (a == "--runs") {
       o.runs = parseInteger(a, value(), 1, 10000);
     } else if (a == "--seed") {
       o.seed = parseInteger(a, value(), 0, 1000000);
@@ -196,25 +190,15 @@ Options parse(int argc, char **argv, bool &help)
       o.stationKeeping = true;
     } else if (a == "--threads") {
       o.threads = ssltut::parseThreads(a, value(), false, 64);
-    } else if (a == "--output-dir") {
-      o.outputDir = value();
-    } else if (a == "--width") {
-      o.width = static_cast<unsigned int>(parseInteger(a, value(), 64, 10000));
-    } else if (a == "--height") {
-      o.height = static_cast<unsigned int>(parseInteger(a, value(), 48, 10000));
-    } else if (a == "--small") {
-      o.small = true;
-    } else if (a == "--quiet") {
-      o.quiet = true;
+    } else if (o.parseOutputOption(a, value, 10000)) {
     } else {
-      throw UsageError{"unknown option " + a + " (see --help)"};
+      return false;
     }
-  }
-  if (o.small) {
-    o.width = 320;
-    o.height = 240;
-  }
-  return o;
+    return true;
+  };
+  const bool go = ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
+  o.applySmall();
+  return go;
 }
 
 // The random conditions of one run, shared by every method.
@@ -450,217 +434,209 @@ std::string summaryLine(const std::string &method, const std::string &water, con
 static int run(int argc, char **argv)
 {
   // A bad option throws UsageError: guardedMain() prints it on one line and returns 2.
-  bool help = false;
-  const Options opt = parse(argc, argv, help);
-  if (help) {
-    std::cout << kUsage;
-    return EXIT_SUCCESS;
+  Options opt;
+  if (!parse(argc, argv, opt)) {
+    return EXIT_SUCCESS; // --help
   }
 
-  try {
-    if (!vpIoTools::checkDirectory(opt.outputDir)) {
-      vpIoTools::makeDirectory(opt.outputDir);
-    }
-    const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
-    const double coastalVisibility = vpSSLWaterModel::preset("coastal").getVisibility();
+  if (!vpIoTools::checkDirectory(opt.outputDir)) {
+    vpIoTools::makeDirectory(opt.outputDir);
+  }
+  const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
+  const double coastalVisibility = vpSSLWaterModel::preset("coastal").getVisibility();
 
-    // Jobs: run-major, so that with several threads the methods of one run progress together.
-    std::vector<Draw> draws;
-    for (int i = 0; i < opt.runs; ++i) {
-      draws.push_back(makeDraw(opt.seed, i, opt, cam, coastalVisibility));
-    }
-    const size_t nbMethods = opt.methods.size();
-    const size_t nbJobs = draws.size() * nbMethods;
-    std::vector<Result> results(nbJobs);
-    std::vector<std::string> errors(nbJobs);
-    std::atomic<size_t> next(0), done(0);
-    std::mutex printMutex;
-    const auto start = std::chrono::steady_clock::now();
-    auto worker = [&](bool alone) {
+  // Jobs: run-major, so that with several threads the methods of one run progress together.
+  std::vector<Draw> draws;
+  for (int i = 0; i < opt.runs; ++i) {
+    draws.push_back(makeDraw(opt.seed, i, opt, cam, coastalVisibility));
+  }
+  const size_t nbMethods = opt.methods.size();
+  const size_t nbJobs = draws.size() * nbMethods;
+  std::vector<Result> results(nbJobs);
+  std::vector<std::string> errors(nbJobs);
+  std::atomic<size_t> next(0), done(0);
+  std::mutex printMutex;
+  const auto start = std::chrono::steady_clock::now();
+  auto worker = [&](bool alone) {
 #ifdef _OPENMP
-      // The renderer and the water model are OpenMP loops: with several runs in parallel, one OpenMP thread per
-      // run keeps the cores busy without oversubscribing them.
-      if (!alone) {
-        omp_set_num_threads(1);
-      }
+    // The renderer and the water model are OpenMP loops: with several runs in parallel, one OpenMP thread per
+    // run keeps the cores busy without oversubscribing them.
+    if (!alone) {
+      omp_set_num_threads(1);
+    }
 #else
-      (void)alone;
+    (void)alone;
 #endif
-      for (size_t j = next++; j < nbJobs; j = next++) {
-        const Draw &d = draws[j / nbMethods];
-        const vpSSLClosedLoop::Method m = opt.methods[j % nbMethods];
-        try {
-          results[j] = runOne(d, m, cam, opt);
-        } catch (const vpException &e) {
-          errors[j] = e.getStringMessage();
-        } catch (const std::exception &e) {
-          errors[j] = e.what();
+    for (size_t j = next++; j < nbJobs; j = next++) {
+      const Draw &d = draws[j / nbMethods];
+      const vpSSLClosedLoop::Method m = opt.methods[j % nbMethods];
+      try {
+        results[j] = runOne(d, m, cam, opt);
+      } catch (const vpException &e) {
+        errors[j] = e.getStringMessage();
+      } catch (const std::exception &e) {
+        errors[j] = e.what();
+      }
+      const size_t n = ++done;
+      if (!opt.quiet) {
+        std::lock_guard<std::mutex> lock(printMutex);
+        const Result &r = results[j];
+        std::fprintf(stderr, "%zu/%zu run %d %s %s: %s, %.1f s wall\n", n, nbJobs, d.run,
+                     vpSSLClosedLoop::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
+                     !errors[j].empty() ? "error"
+                     : r.docked         ? ("docked at " + vpSSLBenchMath::csvNumber(r.timeToDock, 1) + " s").c_str()
+                                        : ("not docked, " + vpSSLHomingBehaviour::getStateName(r.finalState)).c_str(),
+                     r.wallTime);
+      }
+    }
+  };
+  const size_t nbThreads = std::min<size_t>(static_cast<size_t>(opt.threads), nbJobs);
+  if (nbThreads <= 1) {
+    worker(true);
+  } else {
+    std::vector<std::thread> pool;
+    for (size_t i = 0; i < nbThreads; ++i) {
+      pool.emplace_back(worker, false);
+    }
+    for (std::thread &t : pool) {
+      t.join();
+    }
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (size_t j = 0; j < nbJobs; ++j) {
+    if (!errors[j].empty()) {
+      throw vpException(vpException::fatalError, "run %d, method %s: %s", draws[j / nbMethods].run,
+                        vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]).c_str(), errors[j].c_str());
+    }
+  }
+
+  // runs.csv
+  const std::string csvPath = opt.outputDir + "/runs.csv";
+  std::ofstream csv(csvPath);
+  if (!csv) {
+    throw vpException(vpException::ioError, "%s: cannot write", csvPath.c_str());
+  }
+  csv << "run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,"
+         "stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,"
+         "collisions_outside_dock,lost_events,final_state,sim_time,start_in_view,failure\n";
+  for (size_t j = 0; j < nbJobs; ++j) {
+    const Draw &d = draws[j / nbMethods];
+    const Result &r = results[j];
+    csv << d.run << ',' << vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]) << ','
+        << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << vpSSLBenchMath::csvNumber(d.distance, 3) << ','
+        << vpSSLBenchMath::csvNumber(d.lateral, 3) << ',' << vpSSLBenchMath::csvNumber(vpMath::deg(d.heading), 2) << ','
+        << vpSSLBenchMath::csvNumber(d.depthOffset, 3) << ',' << vpSSLBenchMath::csvNumber(d.currentSpeed, 3) << ','
+        << vpSSLBenchMath::csvNumber(vpMath::deg(d.currentDir), 1) << ','
+        << vpSSLBenchMath::csvNumber(d.coastal ? 1.5 : 2.0, 1) << ',' << vpSSLBenchMath::csvNumber(r.startRange, 3)
+        << ',' << (r.docked ? 1 : 0) << ',' << vpSSLBenchMath::csvNumber(r.timeToDock, 1) << ','
+        << vpSSLBenchMath::csvNumber(r.standOffRms, 4) << ',' << r.settledSteps << ','
+        << vpSSLBenchMath::csvNumber(r.firstDetection, 1) << ',' << r.collisionsOutsideDock << ',' << r.lostEvents
+        << ',' << vpSSLHomingBehaviour::getStateName(r.finalState) << ',' << vpSSLBenchMath::csvNumber(r.simTime, 1)
+        << ',' << (d.inView ? 1 : 0) << ',' << r.failure << '\n';
+  }
+  csv.close();
+  if (!csv) {
+    throw vpException(vpException::ioError, "%s: write failed", csvPath.c_str());
+  }
+
+  // summary.md
+  std::ostringstream md;
+  md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
+     << opt.height << ", " << opt.water << " water, start range " << vpSSLBenchMath::csvNumber(opt.startRangeMin, 1)
+     << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m, heading +-"
+     << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
+     << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, current up to "
+     << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
+     << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
+     << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
+     << (opt.stationKeeping ? ", station keeping on the odometry" : "") << "\n\n";
+  md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
+        "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
+        "lost-target events |";
+  for (const std::string &reason : failureReasons()) {
+    md << " " << reason << " |";
+  }
+  md << "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (size_t m = 0; m < nbMethods; ++m) {
+    for (const char *water : {"all", "clear", "coastal"}) {
+      std::vector<const Result *> runs;
+      for (size_t i = 0; i < draws.size(); ++i) {
+        if (std::string(water) == "all" || (draws[i].coastal == (std::string(water) == "coastal"))) {
+          runs.push_back(&results[i * nbMethods + m]);
         }
-        const size_t n = ++done;
-        if (!opt.quiet) {
-          std::lock_guard<std::mutex> lock(printMutex);
-          const Result &r = results[j];
-          std::fprintf(stderr, "%zu/%zu run %d %s %s: %s, %.1f s wall\n", n, nbJobs, d.run,
-                       vpSSLClosedLoop::methodName(m).c_str(), d.coastal ? "coastal" : "clear",
-                       !errors[j].empty() ? "error"
-                       : r.docked         ? ("docked at " + vpSSLBenchMath::csvNumber(r.timeToDock, 1) + " s").c_str()
-                                          : ("not docked, " + vpSSLHomingBehaviour::getStateName(r.finalState)).c_str(),
-                       r.wallTime);
-        }
+      }
+      md << summaryLine(vpSSLClosedLoop::methodName(opt.methods[m]), water, runs);
+    }
+  }
+
+  // Success and time to dock by start range (1 m bins) and success by current (0.05 m/s bins), per method.
+  const double rangeBin = 1., currentBin = 0.05;
+  const size_t nbRangeBins = static_cast<size_t>(std::ceil(opt.startRangeMax / rangeBin));
+  const size_t nbCurrentBins = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.maxCurrent / currentBin)));
+  vpSSLPlot byRange("Docked by start range", "start range (m)", "docked fraction");
+  vpSSLPlot byCurrent("Docked by current", "current (m/s)", "docked fraction");
+  md << "\nBy start range (camera to target centre at the start): docked / runs, time to dock median (s)\n\n"
+     << "| method |";
+  for (size_t b = 0; b < nbRangeBins; ++b) {
+    md << " " << vpSSLBenchMath::csvNumber(b * rangeBin, 0) << "-" << vpSSLBenchMath::csvNumber((b + 1) * rangeBin, 0)
+       << " m |";
+  }
+  md << "\n|---|";
+  for (size_t b = 0; b < nbRangeBins; ++b) {
+    md << "---|";
+  }
+  md << "\n";
+  for (size_t m = 0; m < nbMethods; ++m) {
+    std::vector<Bin> ranges(nbRangeBins), currents(nbCurrentBins);
+    for (size_t i = 0; i < draws.size(); ++i) {
+      const Result &r = results[i * nbMethods + m];
+      const size_t rb = std::min(nbRangeBins - 1, static_cast<size_t>(std::max(0., r.startRange) / rangeBin));
+      const size_t cb = std::min(nbCurrentBins - 1, static_cast<size_t>(draws[i].currentSpeed / currentBin));
+      for (Bin *b : {&ranges[rb], &currents[cb]}) {
+        ++b->n;
+        b->docked += r.docked ? 1 : 0;
+        b->timeToDock.push_back(r.timeToDock);
+      }
+    }
+    auto curve = [](const std::vector<Bin> &bins, double width, std::vector<double> &x, std::vector<double> &y) {
+      for (size_t b = 0; b < bins.size(); ++b) {
+        x.push_back((b + 0.5) * width);
+        y.push_back(bins[b].n ? static_cast<double>(bins[b].docked) / bins[b].n : NAN);
       }
     };
-    const size_t nbThreads = std::min<size_t>(static_cast<size_t>(opt.threads), nbJobs);
-    if (nbThreads <= 1) {
-      worker(true);
-    } else {
-      std::vector<std::thread> pool;
-      for (size_t i = 0; i < nbThreads; ++i) {
-        pool.emplace_back(worker, false);
-      }
-      for (std::thread &t : pool) {
-        t.join();
-      }
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (size_t j = 0; j < nbJobs; ++j) {
-      if (!errors[j].empty()) {
-        throw vpException(vpException::fatalError, "run %d, method %s: %s", draws[j / nbMethods].run,
-                          vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]).c_str(), errors[j].c_str());
-      }
-    }
-
-    // runs.csv
-    const std::string csvPath = opt.outputDir + "/runs.csv";
-    std::ofstream csv(csvPath);
-    if (!csv) {
-      throw vpException(vpException::ioError, "%s: cannot write", csvPath.c_str());
-    }
-    csv << "run,method,water,seed,start_distance,lateral,heading_deg,depth_offset,current_speed,current_dir_deg,"
-           "stand_off,start_range,docked,time_to_dock,standoff_rms,settled_steps,first_detection,"
-           "collisions_outside_dock,lost_events,final_state,sim_time,start_in_view,failure\n";
-    for (size_t j = 0; j < nbJobs; ++j) {
-      const Draw &d = draws[j / nbMethods];
-      const Result &r = results[j];
-      csv << d.run << ',' << vpSSLClosedLoop::methodName(opt.methods[j % nbMethods]) << ','
-          << (d.coastal ? "coastal" : "clear") << ',' << d.seed << ',' << vpSSLBenchMath::csvNumber(d.distance, 3)
-          << ',' << vpSSLBenchMath::csvNumber(d.lateral, 3) << ','
-          << vpSSLBenchMath::csvNumber(vpMath::deg(d.heading), 2) << ',' << vpSSLBenchMath::csvNumber(d.depthOffset, 3)
-          << ',' << vpSSLBenchMath::csvNumber(d.currentSpeed, 3) << ','
-          << vpSSLBenchMath::csvNumber(vpMath::deg(d.currentDir), 1) << ','
-          << vpSSLBenchMath::csvNumber(d.coastal ? 1.5 : 2.0, 1) << ',' << vpSSLBenchMath::csvNumber(r.startRange, 3)
-          << ',' << (r.docked ? 1 : 0) << ',' << vpSSLBenchMath::csvNumber(r.timeToDock, 1) << ','
-          << vpSSLBenchMath::csvNumber(r.standOffRms, 4) << ',' << r.settledSteps << ','
-          << vpSSLBenchMath::csvNumber(r.firstDetection, 1) << ',' << r.collisionsOutsideDock << ',' << r.lostEvents
-          << ',' << vpSSLHomingBehaviour::getStateName(r.finalState) << ',' << vpSSLBenchMath::csvNumber(r.simTime, 1)
-          << ',' << (d.inView ? 1 : 0) << ',' << r.failure << '\n';
-    }
-    csv.close();
-    if (!csv) {
-      throw vpException(vpException::ioError, "%s: write failed", csvPath.c_str());
-    }
-
-    // summary.md
-    std::ostringstream md;
-    md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
-       << opt.height << ", " << opt.water << " water, start range " << vpSSLBenchMath::csvNumber(opt.startRangeMin, 1)
-       << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m, heading +-"
-       << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
-       << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, current up to "
-       << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
-       << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
-       << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
-       << (opt.stationKeeping ? ", station keeping on the odometry" : "") << "\n\n";
-    md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
-          "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
-          "lost-target events |";
-    for (const std::string &reason : failureReasons()) {
-      md << " " << reason << " |";
-    }
-    md << "\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (size_t m = 0; m < nbMethods; ++m) {
-      for (const char *water : {"all", "clear", "coastal"}) {
-        std::vector<const Result *> runs;
-        for (size_t i = 0; i < draws.size(); ++i) {
-          if (std::string(water) == "all" || (draws[i].coastal == (std::string(water) == "coastal"))) {
-            runs.push_back(&results[i * nbMethods + m]);
-          }
-        }
-        md << summaryLine(vpSSLClosedLoop::methodName(opt.methods[m]), water, runs);
-      }
-    }
-
-    // Success and time to dock by start range (1 m bins) and success by current (0.05 m/s bins), per method.
-    const double rangeBin = 1., currentBin = 0.05;
-    const size_t nbRangeBins = static_cast<size_t>(std::ceil(opt.startRangeMax / rangeBin));
-    const size_t nbCurrentBins = std::max<size_t>(1, static_cast<size_t>(std::ceil(opt.maxCurrent / currentBin)));
-    vpSSLPlot byRange("Docked by start range", "start range (m)", "docked fraction");
-    vpSSLPlot byCurrent("Docked by current", "current (m/s)", "docked fraction");
-    md << "\nBy start range (camera to target centre at the start): docked / runs, time to dock median (s)\n\n"
-       << "| method |";
-    for (size_t b = 0; b < nbRangeBins; ++b) {
-      md << " " << vpSSLBenchMath::csvNumber(b * rangeBin, 0) << "-" << vpSSLBenchMath::csvNumber((b + 1) * rangeBin, 0)
-         << " m |";
-    }
-    md << "\n|---|";
-    for (size_t b = 0; b < nbRangeBins; ++b) {
-      md << "---|";
+    std::vector<double> xr, yr, xc, yc;
+    curve(ranges, rangeBin, xr, yr);
+    curve(currents, currentBin, xc, yc);
+    const std::string name = vpSSLClosedLoop::methodName(opt.methods[m]);
+    byRange.addSeries(name, xr, yr, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
+    byCurrent.addSeries(name, xc, yc, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
+    md << "| " << name << " |";
+    for (const Bin &b : ranges) {
+      md << " " << b.docked << "/" << b.n << ", "
+         << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(b.timeToDock, 50.), 1) << " |";
     }
     md << "\n";
-    for (size_t m = 0; m < nbMethods; ++m) {
-      std::vector<Bin> ranges(nbRangeBins), currents(nbCurrentBins);
-      for (size_t i = 0; i < draws.size(); ++i) {
-        const Result &r = results[i * nbMethods + m];
-        const size_t rb = std::min(nbRangeBins - 1, static_cast<size_t>(std::max(0., r.startRange) / rangeBin));
-        const size_t cb = std::min(nbCurrentBins - 1, static_cast<size_t>(draws[i].currentSpeed / currentBin));
-        for (Bin *b : {&ranges[rb], &currents[cb]}) {
-          ++b->n;
-          b->docked += r.docked ? 1 : 0;
-          b->timeToDock.push_back(r.timeToDock);
-        }
-      }
-      auto curve = [](const std::vector<Bin> &bins, double width, std::vector<double> &x, std::vector<double> &y) {
-        for (size_t b = 0; b < bins.size(); ++b) {
-          x.push_back((b + 0.5) * width);
-          y.push_back(bins[b].n ? static_cast<double>(bins[b].docked) / bins[b].n : NAN);
-        }
-      };
-      std::vector<double> xr, yr, xc, yc;
-      curve(ranges, rangeBin, xr, yr);
-      curve(currents, currentBin, xc, yc);
-      const std::string name = vpSSLClosedLoop::methodName(opt.methods[m]);
-      byRange.addSeries(name, xr, yr, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
-      byCurrent.addSeries(name, xc, yc, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
-      md << "| " << name << " |";
-      for (const Bin &b : ranges) {
-        md << " " << b.docked << "/" << b.n << ", "
-           << vpSSLBenchMath::fmt(vpSSLBenchMath::percentile(b.timeToDock, 50.), 1) << " |";
-      }
-      md << "\n";
-    }
-    byRange.setYRange(0., 1.05);
-    byCurrent.setYRange(0., 1.05);
-    byRange.setXRange(0., nbRangeBins * rangeBin);
-    byCurrent.setXRange(0., nbCurrentBins * currentBin);
-    vpSSLPlot::saveStacked({byRange, byCurrent}, opt.outputDir + "/outcomes.png", 800, 300);
-
-    const std::string mdPath = opt.outputDir + "/summary.md";
-    std::ofstream mdFile(mdPath);
-    mdFile << md.str();
-    mdFile.close();
-    if (!mdFile) {
-      throw vpException(vpException::ioError, "%s: cannot write", mdPath.c_str());
-    }
-    std::cout << md.str();
-    double wall = 0.;
-    for (const Result &r : results) {
-      wall += r.wallTime;
-    }
-    std::printf("\n%zu runs in %.1f s with %zu thread(s): %.1f s per run on average -> %s, %s\n", nbJobs, elapsed,
-                std::max<size_t>(1, nbThreads), wall / std::max<size_t>(1, nbJobs), csvPath.c_str(), mdPath.c_str());
-  } catch (const vpException &e) {
-    std::cerr << "tutorial-ssl-servo-monte-carlo: " << e.getStringMessage() << std::endl;
-    return EXIT_FAILURE;
   }
+  byRange.setYRange(0., 1.05);
+  byCurrent.setYRange(0., 1.05);
+  byRange.setXRange(0., nbRangeBins * rangeBin);
+  byCurrent.setXRange(0., nbCurrentBins * currentBin);
+  vpSSLPlot::saveStacked({byRange, byCurrent}, opt.outputDir + "/outcomes.png", 800, 300);
+
+  const std::string mdPath = opt.outputDir + "/summary.md";
+  std::ofstream mdFile(mdPath);
+  mdFile << md.str();
+  mdFile.close();
+  if (!mdFile) {
+    throw vpException(vpException::ioError, "%s: cannot write", mdPath.c_str());
+  }
+  std::cout << md.str();
+  double wall = 0.;
+  for (const Result &r : results) {
+    wall += r.wallTime;
+  }
+  std::printf("\n%zu runs in %.1f s with %zu thread(s): %.1f s per run on average -> %s, %s\n", nbJobs, elapsed,
+              std::max<size_t>(1, nbThreads), wall / std::max<size_t>(1, nbJobs), csvPath.c_str(), mdPath.c_str());
   return EXIT_SUCCESS;
 }
 

@@ -19,7 +19,9 @@
 #include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLPlot.h>
 
+#include "ssl_tutorial_closed_loop_options.h"
 #include "ssl_tutorial_common.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 using ssltut::parseInteger;
@@ -55,29 +57,21 @@ lateral (vehicle y minus target y, world, m), target_y, collision, y_rel_est and
 starboard position in the vehicle frame, measured and true, m; empty when the target is not measured).
 )";
 
-struct Options
+struct Options : ssltut::ClosedLoopOutputOptions
 {
   std::string scenario = "fig7";
   std::string method = "ssl";
   double duration = -1.;
   long seed = 1;
-  std::string outputDir = ".";
-  unsigned int width = 640, height = 480;
-  bool small = false;
   int supersampling = -1;
-  bool quiet = false;
 };
 
-Options parse(int argc, char **argv, bool &help)
+// The command line into \e o; false after --help, the usage printed.
+bool parse(int argc, char **argv, Options &o)
 {
-  Options o;
-  help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() { return ssltut::optionValue(argc, argv, i); };
-    if (a == "--help" || a == "-h") {
-      help = true;
-    } else if (a == "--scenario") {
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
+    if (a == "--scenario") {
       o.scenario = value();
       if (o.scenario != "fig7" && o.scenario != "fig8" && o.scenario != "fig9" && o.scenario != "field") {
         throw UsageError{"--scenario: unknown \"" + o.scenario + "\" (fig7, fig8, fig9, field)"};
@@ -95,36 +89,26 @@ Options parse(int argc, char **argv, bool &help)
       }
     } else if (a == "--seed") {
       o.seed = parseInteger(a, value(), 0, 100000);
-    } else if (a == "--output-dir") {
-      o.outputDir = value();
-    } else if (a == "--width") {
-      o.width = static_cast<unsigned int>(parseInteger(a, value(), 64, 100000));
-    } else if (a == "--height") {
-      o.height = static_cast<unsigned int>(parseInteger(a, value(), 48, 100000));
-    } else if (a == "--small") {
-      o.small = true;
+    } else if (o.parseOutputOption(a, value, 100000)) {
     } else if (a == "--supersampling") {
       o.supersampling = static_cast<int>(parseInteger(a, value(), 1, 100000));
       if (o.supersampling > 8) {
         throw UsageError{"--supersampling: expected 1 to 8"};
       }
-    } else if (a == "--quiet") {
-      o.quiet = true;
     } else {
-      throw UsageError{"unknown option " + a + " (see --help)"};
+      return false;
     }
-  }
-  if (o.small) {
-    o.width = 320;
-    o.height = 240;
-  }
+    return true;
+  };
+  const bool go = ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::ReadAll, option);
+  o.applySmall();
   if (o.supersampling < 0) {
     o.supersampling = 1; // one ray per pixel keeps a 300 s fig7 run at 640x480 within a couple of minutes
   }
   if (o.duration < 0.) {
     o.duration = o.scenario == "fig7" ? 300. : o.scenario == "fig8" ? 200. : o.scenario == "fig9" ? 90. : 120.;
   }
-  return o;
+  return go;
 }
 
 } // namespace
@@ -134,141 +118,134 @@ using Row = vpSSLClosedLoop::Row;
 static int run(int argc, char **argv)
 {
   // A bad option throws UsageError: guardedMain() prints it on one line and returns 2.
-  bool help = false;
-  const Options opt = parse(argc, argv, help);
-  if (help) {
-    std::cout << kUsage;
-    return EXIT_SUCCESS;
+  Options opt;
+  if (!parse(argc, argv, opt)) {
+    return EXIT_SUCCESS; // --help
   }
   vpSSLClosedLoop::Method method = vpSSLClosedLoop::Method::Ssl;
   vpSSLClosedLoop::parseMethod(opt.method, method); // checked by parse()
   const std::string base = opt.outputDir + "/servo-" + opt.scenario + "-" + opt.method;
 
-  try {
-    if (!vpIoTools::checkDirectory(opt.outputDir)) {
-      vpIoTools::makeDirectory(opt.outputDir);
-    }
-    // The camera of the paper's vehicle, scaled to the requested image size (same field of view).
-    const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
-    // Scenario figures (paper Sec. 5).
-    const double D = opt.duration;
-    const bool field = opt.scenario == "field";
-    const vpSSLClosedLoop::Scene scene = vpSSLClosedLoop::paperScene(opt.scenario, D);
-    const double standOff = scene.standOff;
-    vpSSLClosedLoop loop(scene, method, cam, opt.width, opt.height, static_cast<unsigned int>(opt.supersampling),
-                         opt.seed);
-    vpSSLAuvSimulator &auv = loop.getAuv();
-    const vpSSLHomingBehaviour &homing = loop.getHoming();
-
-    std::vector<Row> rows;
-    const auto start = std::chrono::steady_clock::now();
-    const int nbSteps = static_cast<int>(std::lround(D / auv.getTimeStep()));
-    double dockTime = NAN;
-    int lastPercent = -1;
-    for (int k = 0; k <= nbSteps; ++k) {
-      const Row r = loop.step(k);
-      if (homing.getState() == SSL_HOMING_DOCKED && !std::isfinite(dockTime)) {
-        dockTime = r.t;
-      }
-      rows.push_back(r);
-      if (std::isfinite(dockTime) && r.t > dockTime + 2.) {
-        break; // docked: a little more to show it stays
-      }
-      loop.apply();
-
-      const int percent = static_cast<int>(100. * k / std::max(1, nbSteps));
-      if (!opt.quiet && percent / 10 != lastPercent / 10) {
-        lastPercent = percent;
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "t %.0f s (%d %%), state %s, %.0f ms/step\n", r.t, percent,
-                     vpSSLHomingBehaviour::getStateName(homing.getState()).c_str(), 1000. * elapsed / (k + 1));
-      }
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    vpSSLClosedLoop::writeRows(base + ".csv", rows);
-
-    // Figure.
-    auto column = [&](double Row::*field) {
-      std::vector<double> v;
-      for (const Row &r : rows) {
-        v.push_back(r.*field);
-      }
-      return v;
-    };
-    std::vector<double> ts = column(&Row::t), stateIndex;
-    for (const Row &r : rows) {
-      stateIndex.push_back(static_cast<double>(r.state));
-    }
-    const double tEnd = ts.empty() ? 1. : std::max(1., ts.back());
-    auto panel = [&](const std::string &title, const std::string &y) {
-      vpSSLPlot p(title, "t (s)", y);
-      p.setXRange(0., tEnd);
-      return p;
-    };
-    // The panels the scenarios share.
-    auto yawPanel = [&](const std::string &title) {
-      vpSSLPlot p = panel(title, "rad/s");
-      p.addSeries("demanded", ts, column(&Row::yawDemand));
-      p.addSeries("actual", ts, column(&Row::yawRate), vpColor::red);
-      return p;
-    };
-    auto rangePanel = [&](const std::string &title) {
-      vpSSLPlot p = panel(title, "m");
-      p.addSeries("estimated", ts, column(&Row::estRange));
-      p.addSeries("true", ts, column(&Row::trueRange), vpColor::red);
-      return p;
-    };
-    auto nbPanel = [&]() {
-      vpSSLPlot p = panel("nbPoints", "points");
-      p.addSeries("nbPoints", ts, column(&Row::nbPoints));
-      return p;
-    };
-    auto statePanel = [&]() {
-      vpSSLPlot p = panel("State (0 search, 1 align, 2 home, 3 dock, 4 docked)", "state");
-      p.addSeries("state", ts, stateIndex);
-      p.setYRange(-0.5, 4.5);
-      return p;
-    };
-    std::vector<vpSSLPlot> panels;
-    const std::string what = opt.scenario + ", " + opt.method;
-    if (opt.scenario == "fig7" || field) {
-      vpSSLPlot depth = panel("Depth", "m");
-      depth.addSeries("depth", ts, column(&Row::depth));
-      vpSSLPlot rng = rangePanel("Range");
-      rng.addHorizontalLine(standOff, "stand-off");
-      panels = {yawPanel("Yaw rate (" + what + ")"), depth, statePanel(), nbPanel(), rng};
-    } else if (opt.scenario == "fig8") {
-      // As the paper's Fig. 8: the target's lateral position in the vehicle frame, which the yaw brings back to 0.
-      vpSSLPlot lat = panel("Target lateral position in the vehicle frame (" + what + ")", "y_rel (m)");
-      lat.addSeries("measured", ts, column(&Row::yRelEst));
-      lat.addSeries("true", ts, column(&Row::yRelTrue), vpColor::red);
-      lat.addSeries("target moved (world)", ts, column(&Row::targetY), vpColor::darkGreen);
-      vpSSLPlot heading = panel("Heading", "deg");
-      heading.addSeries("heading", ts, column(&Row::heading));
-      panels = {lat, heading, yawPanel("Yaw rate")};
-    } else {
-      vpSSLPlot col = panel("Collision", "flag");
-      col.addSeries("collision", ts, column(&Row::collision));
-      col.setYRange(-0.1, 1.1);
-      panels = {rangePanel("Range (" + what + ")"), nbPanel(), col, statePanel()};
-    }
-    vpSSLPlot::saveStacked(panels, base + ".png");
-
-    // Summary: stand-off RMS error over the settled HOME steps (vpSSLClosedLoop::standOffRms()).
-    size_t n = 0;
-    const double rms = vpSSLClosedLoop::standOffRms(rows, standOff, n);
-    std::printf("scenario %s, method %s, %.0f s simulated in %.1f s (%.0f ms/step, %ux%u, %d spp): final state %s, "
-                "stand-off RMS %s m over %zu settled HOME steps, time to dock %s s -> %s.csv/.png\n",
-                opt.scenario.c_str(), opt.method.c_str(), rows.empty() ? 0. : rows.back().t, elapsed,
-                1000. * elapsed / std::max<size_t>(1, rows.size()), opt.width, opt.height,
-                opt.supersampling * opt.supersampling, vpSSLHomingBehaviour::getStateName(homing.getState()).c_str(),
-                n ? vpSSLBenchMath::csvNumber(rms, 3).c_str() : "n/a", n,
-                std::isfinite(dockTime) ? vpSSLBenchMath::csvNumber(dockTime, 1).c_str() : "n/a", base.c_str());
-  } catch (const vpException &e) {
-    std::cerr << "tutorial-ssl-servo: " << e.getStringMessage() << std::endl;
-    return EXIT_FAILURE;
+  if (!vpIoTools::checkDirectory(opt.outputDir)) {
+    vpIoTools::makeDirectory(opt.outputDir);
   }
+  // The camera of the paper's vehicle, scaled to the requested image size (same field of view).
+  const vpCameraParameters cam = vpSSLClosedLoop::scaledCamera(opt.width, opt.height);
+  // Scenario figures (paper Sec. 5).
+  const double D = opt.duration;
+  const bool field = opt.scenario == "field";
+  const vpSSLClosedLoop::Scene scene = vpSSLClosedLoop::paperScene(opt.scenario, D);
+  const double standOff = scene.standOff;
+  vpSSLClosedLoop loop(scene, method, cam, opt.width, opt.height, static_cast<unsigned int>(opt.supersampling),
+                       opt.seed);
+  vpSSLAuvSimulator &auv = loop.getAuv();
+  const vpSSLHomingBehaviour &homing = loop.getHoming();
+
+  std::vector<Row> rows;
+  const auto start = std::chrono::steady_clock::now();
+  const int nbSteps = static_cast<int>(std::lround(D / auv.getTimeStep()));
+  double dockTime = NAN;
+  int lastPercent = -1;
+  for (int k = 0; k <= nbSteps; ++k) {
+    const Row r = loop.step(k);
+    if (homing.getState() == SSL_HOMING_DOCKED && !std::isfinite(dockTime)) {
+      dockTime = r.t;
+    }
+    rows.push_back(r);
+    if (std::isfinite(dockTime) && r.t > dockTime + 2.) {
+      break; // docked: a little more to show it stays
+    }
+    loop.apply();
+
+    const int percent = static_cast<int>(100. * k / std::max(1, nbSteps));
+    if (!opt.quiet && percent / 10 != lastPercent / 10) {
+      lastPercent = percent;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "t %.0f s (%d %%), state %s, %.0f ms/step\n", r.t, percent,
+                   vpSSLHomingBehaviour::getStateName(homing.getState()).c_str(), 1000. * elapsed / (k + 1));
+    }
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  vpSSLClosedLoop::writeRows(base + ".csv", rows);
+
+  // Figure.
+  auto column = [&](double Row::*field) {
+    std::vector<double> v;
+    for (const Row &r : rows) {
+      v.push_back(r.*field);
+    }
+    return v;
+  };
+  std::vector<double> ts = column(&Row::t), stateIndex;
+  for (const Row &r : rows) {
+    stateIndex.push_back(static_cast<double>(r.state));
+  }
+  const double tEnd = ts.empty() ? 1. : std::max(1., ts.back());
+  auto panel = [&](const std::string &title, const std::string &y) {
+    vpSSLPlot p(title, "t (s)", y);
+    p.setXRange(0., tEnd);
+    return p;
+  };
+  // The panels the scenarios share.
+  auto yawPanel = [&](const std::string &title) {
+    vpSSLPlot p = panel(title, "rad/s");
+    p.addSeries("demanded", ts, column(&Row::yawDemand));
+    p.addSeries("actual", ts, column(&Row::yawRate), vpColor::red);
+    return p;
+  };
+  auto rangePanel = [&](const std::string &title) {
+    vpSSLPlot p = panel(title, "m");
+    p.addSeries("estimated", ts, column(&Row::estRange));
+    p.addSeries("true", ts, column(&Row::trueRange), vpColor::red);
+    return p;
+  };
+  auto nbPanel = [&]() {
+    vpSSLPlot p = panel("nbPoints", "points");
+    p.addSeries("nbPoints", ts, column(&Row::nbPoints));
+    return p;
+  };
+  auto statePanel = [&]() {
+    vpSSLPlot p = panel("State (0 search, 1 align, 2 home, 3 dock, 4 docked)", "state");
+    p.addSeries("state", ts, stateIndex);
+    p.setYRange(-0.5, 4.5);
+    return p;
+  };
+  std::vector<vpSSLPlot> panels;
+  const std::string what = opt.scenario + ", " + opt.method;
+  if (opt.scenario == "fig7" || field) {
+    vpSSLPlot depth = panel("Depth", "m");
+    depth.addSeries("depth", ts, column(&Row::depth));
+    vpSSLPlot rng = rangePanel("Range");
+    rng.addHorizontalLine(standOff, "stand-off");
+    panels = {yawPanel("Yaw rate (" + what + ")"), depth, statePanel(), nbPanel(), rng};
+  } else if (opt.scenario == "fig8") {
+    // As the paper's Fig. 8: the target's lateral position in the vehicle frame, which the yaw brings back to 0.
+    vpSSLPlot lat = panel("Target lateral position in the vehicle frame (" + what + ")", "y_rel (m)");
+    lat.addSeries("measured", ts, column(&Row::yRelEst));
+    lat.addSeries("true", ts, column(&Row::yRelTrue), vpColor::red);
+    lat.addSeries("target moved (world)", ts, column(&Row::targetY), vpColor::darkGreen);
+    vpSSLPlot heading = panel("Heading", "deg");
+    heading.addSeries("heading", ts, column(&Row::heading));
+    panels = {lat, heading, yawPanel("Yaw rate")};
+  } else {
+    vpSSLPlot col = panel("Collision", "flag");
+    col.addSeries("collision", ts, column(&Row::collision));
+    col.setYRange(-0.1, 1.1);
+    panels = {rangePanel("Range (" + what + ")"), nbPanel(), col, statePanel()};
+  }
+  vpSSLPlot::saveStacked(panels, base + ".png");
+
+  // Summary: stand-off RMS error over the settled HOME steps (vpSSLClosedLoop::standOffRms()).
+  size_t n = 0;
+  const double rms = vpSSLClosedLoop::standOffRms(rows, standOff, n);
+  std::printf("scenario %s, method %s, %.0f s simulated in %.1f s (%.0f ms/step, %ux%u, %d spp): final state %s, "
+              "stand-off RMS %s m over %zu settled HOME steps, time to dock %s s -> %s.csv/.png\n",
+              opt.scenario.c_str(), opt.method.c_str(), rows.empty() ? 0. : rows.back().t, elapsed,
+              1000. * elapsed / std::max<size_t>(1, rows.size()), opt.width, opt.height,
+              opt.supersampling * opt.supersampling, vpSSLHomingBehaviour::getStateName(homing.getState()).c_str(),
+              n ? vpSSLBenchMath::csvNumber(rms, 3).c_str() : "n/a", n,
+              std::isfinite(dockTime) ? vpSSLBenchMath::csvNumber(dockTime, 1).c_str() : "n/a", base.c_str());
   return EXIT_SUCCESS;
 }
 

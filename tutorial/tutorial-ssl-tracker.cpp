@@ -21,8 +21,10 @@
 #include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
 
+#include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_input.h"
+#include "ssl_tutorial_option_loop.h"
 
 namespace {
 const char *kUsage = R"(Usage: tutorial-ssl-tracker --sequence DIR [options]
@@ -190,34 +192,21 @@ int run(int argc, char **argv)
 {
   bool csvSet = false;
   std::string sequence, csvPath, outputDir, smallMode = "auto";
-  std::string videoPath, cameraFile, cameraName = "Camera", targetName = "ssl3-a3";
+  std::string videoPath;
+  ssltut::CameraTargetOptions camera;
   bool display = false, useOdometry = true, quiet = false, summary = false;
   unsigned int particles = 1000, fullSearch = 10;
   long seed = 1, maxFrames = -1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        fail("option " + a + " needs a value (see --help)", 2);
-      }
-      return argv[++i];
-    };
+  // One option: false for an option this tutorial does not know.
+  const auto option = [&](const std::string &a, const auto &value) {
     auto count = [&](const std::string &v, long long maximum) {
       return static_cast<long>(ssltut::parseInteger("option " + a, v, 0, maximum));
     };
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else if (a == "--sequence") {
+    if (a == "--sequence") {
       sequence = value();
     } else if (a == "--video") {
       videoPath = value();
-    } else if (a == "--camera") {
-      cameraFile = value();
-    } else if (a == "--camera-name") {
-      cameraName = value();
-    } else if (a == "--target") {
-      targetName = value();
+    } else if (camera.parseCameraOption(a, value)) {
     } else if (a == "--csv") {
       csvPath = value();
       csvSet = true;
@@ -249,8 +238,12 @@ int run(int argc, char **argv)
     } else if (a == "--summary") {
       summary = true;
     } else {
-      fail("unknown option \"" + a + "\" (see --help)", 2);
+      return false;
     }
+    return true;
+  };
+  if (!ssltut::readOptions(argc, argv, kUsage, ssltut::OptionStyle::HelpFirst, option)) {
+    return 0; // --help
   }
   const bool isVideo = !videoPath.empty();
   if (sequence.empty() && !isVideo) {
@@ -259,7 +252,7 @@ int run(int argc, char **argv)
   if (!sequence.empty() && isVideo) {
     fail("--sequence and --video: give one of them (see --help)", 2);
   }
-  if (isVideo && cameraFile.empty()) {
+  if (isVideo && camera.cameraFile.empty()) {
     fail("--video needs --camera (see --help)", 2);
   }
   if (csvSet && csvPath.empty()) {
@@ -287,7 +280,7 @@ int run(int argc, char **argv)
   vpCameraParameters cam;
   std::unique_ptr<vpSSLTracker> trackerPtr;
   if (isVideo) {
-    ssltut::loadCameraAndTarget(cameraFile, cameraName, targetName, cam, target);
+    ssltut::loadCameraAndTarget(camera.cameraFile, camera.cameraName, camera.targetName, cam, target);
     try {
       video.open(videoPath);
     } catch (const vpException &e) {

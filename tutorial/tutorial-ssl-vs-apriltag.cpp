@@ -447,11 +447,7 @@ int run(int argc, char **argv)
   std::string vispDir;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc)
-        fail(arg + ": missing value", 2);
-      return argv[++i];
-    };
+    auto value = [&] { return ssltut::optionValue(argc, argv, i, ssltut::MissingValue::Colon); };
     if (arg == "--help" || arg == "-h") {
       std::cout << kUsage;
       return 0;
