@@ -18,9 +18,11 @@
   \brief An image file reader that never lets a hostile file reach an unchecked decoder.
 
   read() reads the size from the file's header (PNG, JPEG, PGM/PPM/PBM, BMP) and checks it against
-  vpSSLInputLimits before any pixel is decoded; it then decodes through OpenCV, whose decoders fail cleanly on
-  truncated or corrupt data (ViSP 3.5's PNG reader leaks on them, and trusts the header's size). A 16-bit image
-  is scaled to 8 bits (value / 257, rounded).
+  vpSSLInputLimits before any pixel is decoded; it then decodes through OpenCV (ViSP 3.5's PNG reader leaks on
+  truncated or corrupt data, and trusts the header's size). A truncated or corrupt PNG or JPEG is refused before
+  OpenCV sees it, since libpng and libjpeg would print their own line on stderr (and libjpeg decode the missing
+  rows as grey): a PNG's chunks and CRCs are walked, a JPEG is decoded once by libjpeg with an error manager that
+  prints nothing and turns its warnings into errors. A 16-bit image is scaled to 8 bits (value / 257, rounded).
 
   \code
   vpImage<unsigned char> I;
@@ -33,7 +35,7 @@ public:
   /*!
     Reads a grey image (colour files are converted with ViSP's grey conversion).
     \exception vpException (ioError) naming the file and the problem: missing, unknown format, header size
-    beyond the limits, truncated or corrupt data.
+    beyond the limits, truncated or corrupt data (for a JPEG, with libjpeg's message).
   */
   static void read(vpImage<unsigned char> &I, const std::string &filename);
 
