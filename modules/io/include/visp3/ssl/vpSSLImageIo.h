@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
@@ -51,6 +52,18 @@ public:
     is malformed or, for a binary PNM, the pixel data are shorter than the header says.
   */
   static std::string readHeader(const std::string &filename, uint64_t &width, uint64_t &height);
+
+  /*!
+    Checks encoded image data in memory (a PNG, JPEG, PNM or BMP file's bytes, e.g. a compressed image message) as
+    read() checks a file before it hands it to a decoder: the format and the header's size within the limits, a
+    PNG's chunks and CRCs, a JPEG decoded once by libjpeg without a word on stderr. Data that passes decodes through
+    OpenCV's cv::imdecode() without a decoder's message on stderr.
+    \param data : the encoded image.
+    \param name : what the data is, for the messages (e.g. "dive.bag: /camera/image_raw/compressed: image 3").
+    \return the format's name ("PNG", "JPEG", "PGM", ...).
+    \exception vpException (ioError) "NAME: problem", as read() names the file.
+  */
+  static std::string checkData(const std::vector<unsigned char> &data, const std::string &name);
 };
 
 #endif
