@@ -209,6 +209,41 @@ TEST_F(Rosbag, NotABagIsOneIoError)
   EXPECT_THROW(reader.open(scratch("missing.bag")), vpException);
 }
 
+TEST_F(Rosbag, CorruptLengthsAreRefusedBeforeRosbagStorageReadsThem)
+{
+  // rosbag_storage allocates a record's declared header length before reading it, and parses a chunk's records at
+  // the index's offsets: the reader names the byte instead.
+  const std::string good = scratch("good.bag");
+  ssltest::TestBagOptions options;
+  options.frames = 1;
+  options.width = 32;
+  options.height = 24;
+  ssltest::writeTestBag(good, options);
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  auto openError = [this](const std::string &name, const std::string &content) {
+    const std::string path = scratch(name);
+    std::ofstream(path, std::ios::binary) << content;
+    vpSSLRosbagReader reader;
+    try {
+      reader.open(path);
+    } catch (const vpException &e) {
+      EXPECT_EQ(e.getCode(), vpException::ioError);
+      return e.getStringMessage().substr(path.size());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(openError("good-copy.bag", bytes), "no error");
+  std::string huge = bytes;
+  huge.replace(13, 4, std::string("\xf0\xff\xff\xff", 4));
+  EXPECT_EQ(openError("huge.bag", huge),
+            ": cannot read the bag: byte 13: record header of 4294967280 bytes beyond the end of its file");
+  EXPECT_EQ(openError("cut.bag", bytes.substr(0, bytes.size() - 7)).rfind(": cannot read the bag: byte ", 0), 0u);
+}
+
 TEST_F(Rosbag, FramesFeedTheTrackerDirectly)
 {
   const std::string bag = scratch("dive.bag");
