@@ -3,7 +3,7 @@
 # its committed corpus (fuzz/corpus/<target>/) as a regression, then fuzzes each for SECONDS from a copy of that
 # corpus (the committed one is never modified; new inputs and crashes stay in build-fuzz/runs/<target>/).
 # Usage: scripts/fuzz.sh [--time SECONDS] [--regression-only] [--runs N] [TARGET ...]
-#   --time SECONDS     fuzzing time per target (default 12)
+#   --time SECONDS     fuzzing time per target (default 10)
 #   --runs N           instead of a time, stop each target after N executions (a long campaign: see doc/fuzzing.md)
 #   --regression-only  only run the committed corpora
 #   TARGET             fuzz_target_file, fuzz_camera_file, ... (default: all those built)
@@ -12,7 +12,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$VISP_SSL_ROOT"
 
-seconds=12
+seconds=10
 runs=""
 regressionOnly=0
 targets=()
