@@ -123,7 +123,11 @@ public:
           throw vpException(vpException::badValue, at + "not a readable " + std::string(kCompressedImage));
         stamp = msg->header.stamp;
         // The size within the limits before OpenCV allocates it, and no line of libpng or libjpeg on stderr.
-        vpSSLImageIo::checkData(msg->data, at + "compressed image");
+        try {
+          vpSSLImageIo::checkData(msg->data, at + "compressed image");
+        } catch (const vpException &e) {
+          throw vpException(vpException::badValue, e.getStringMessage());
+        }
         image = cv::imdecode(msg->data, cv::IMREAD_UNCHANGED);
         if (image.empty())
           throw vpException(vpException::badValue,
