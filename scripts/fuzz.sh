@@ -3,16 +3,16 @@
 # its committed corpus (fuzz/corpus/<target>/) as a regression, then fuzzes each for SECONDS from a copy of that
 # corpus (the committed one is never modified; new inputs and crashes stay in build-fuzz/runs/<target>/).
 # Usage: scripts/fuzz.sh [--time SECONDS] [--regression-only] [--runs N] [TARGET ...]
-#   --time SECONDS     fuzzing time per target (default 12)
+#   --time SECONDS     fuzzing time per target (default 10)
 #   --runs N           instead of a time, stop each target after N executions (a long campaign: see doc/fuzzing.md)
 #   --regression-only  only run the committed corpora
-#   TARGET             fuzz_target_file, fuzz_camera_file, ... (default: all)
+#   TARGET             fuzz_target_file, fuzz_camera_file, ... (default: all those built)
 # Exits non-zero on the first crash, leak, sanitizer report or timeout; the reproducer is in build-fuzz/runs/.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$VISP_SSL_ROOT"
 
-seconds=12
+seconds=10
 runs=""
 regressionOnly=0
 targets=()
@@ -40,6 +40,8 @@ dict_of() {
   fuzz_camera_file) echo fuzz/dict/camera_file.dict ;;
   fuzz_sequence_json) echo fuzz/dict/sequence_json.dict ;;
   fuzz_frames_csv | fuzz_sequence_folder) echo fuzz/dict/frames_csv.dict ;;
+  fuzz_odometry_csv) echo fuzz/dict/odometry_csv.dict ;;
+  fuzz_rosbag) echo fuzz/dict/rosbag.dict ;;
   fuzz_detector) echo fuzz/dict/image.dict ;;
   *) echo "" ;;
   esac
@@ -50,9 +52,17 @@ rm -f "$build/build.log"
 run_logged "$build/build.log" cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
   -DCMAKE_CXX_COMPILER=clang++-14 -DVISP_SSL_BUILD_FUZZERS=ON -DVISP_SSL_SANITIZE=OFF -DVISP_SSL_BUILD_TESTS=OFF \
   -DVISP_SSL_BUILD_TUTORIALS=OFF -DVISP_SSL_BUILD_BENCHMARKS=OFF
+# The targets this configuration builds (fuzz_rosbag only with the ROS packages): fuzz/CMakeLists.txt lists them.
+mapfile -t built <"$build/fuzz/targets.txt"
 if [ ${#targets[@]} -eq 0 ]; then
-  for f in fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
+  targets=("${built[@]}")
 fi
+for t in "${targets[@]}"; do
+  if ! printf '%s\n' "${built[@]}" | grep -qx -- "$t"; then
+    echo "fuzz.sh: $t is not built here (targets: ${built[*]}; fuzz_rosbag needs Debian's ROS packages)" >&2
+    exit 2
+  fi
+done
 run_logged "$build/build.log" cmake --build "$build" -j"$JOBS" --target "${targets[@]}"
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"

@@ -199,6 +199,24 @@ TEST_F(Hostile, TruncatedOrCorruptImagesFailCleanlyWithTheReason)
   EXPECT_HAS(errorOf([&] { vpSSLImageIo::read(I, write("n.pgm", "P5\nx 4\n255\n")); }), "width: not a number");
 }
 
+TEST_F(Hostile, EncodedDataInMemoryIsCheckedAsAFile)
+{
+  // The sample photograph passes; cut, corrupt or declaring 20000 x 20000 pixels, it is refused with the name given.
+  const std::string png = readBytes(std::string(VISP_SSL_DATA_DIR) + "/images/ssl3-a3-00.png");
+  auto data = [](const std::string &bytes) { return std::vector<unsigned char>(bytes.begin(), bytes.end()); };
+  EXPECT_EQ(vpSSLImageIo::checkData(data(png), "photo"), "PNG");
+  EXPECT_HAS(errorOf([&] { vpSSLImageIo::checkData(data(png.substr(0, 1000)), "cut"); }),
+             "cut: PNG data truncated: chunk IDAT at byte");
+  std::string corrupt = png;
+  corrupt[corrupt.size() / 2] ^= 0x55;
+  EXPECT_HAS(errorOf([&] { vpSSLImageIo::checkData(data(corrupt), "corrupt"); }), "corrupt: PNG data corrupt: bad CRC");
+  std::string big = png;
+  const unsigned char size[8] = {0, 0, 0x4E, 0x20, 0, 0, 0x4E, 0x20};
+  big.replace(16, 8, reinterpret_cast<const char *>(size), 8);
+  EXPECT_HAS(errorOf([&] { vpSSLImageIo::checkData(data(big), "big"); }), "big: PNG header: 20000 x 20000 pixels");
+  EXPECT_HAS(errorOf([&] { vpSSLImageIo::checkData(data("hello"), "text"); }), "text: unknown image format");
+}
+
 TEST_F(Hostile, SixteenBitAndAsciiPgmAreRead)
 {
   vpImage<unsigned char> I;

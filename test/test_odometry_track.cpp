@@ -73,6 +73,31 @@ TEST(OdometryTrack, BadFilesAreNamedByLineAndColumn)
             ":4: row: a row after an empty line (a hole in the table)");
 }
 
+TEST(OdometryTrack, SamplesAreReadBackAsLoadedAndBoundsAreThoseOfTheReader)
+{
+  const std::string path = writeCsv("s.csv", "t,tx,ty,tz,tux,tuy,tuz\n1,2,3,4,0,0,0.5\n7.5,-1,0,0,0,0,0\n");
+  const vpSSLOdometryTrack track = vpSSLOdometryTrack::load(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(track.size(), 2u);
+  EXPECT_EQ(track.getTime(0), 1.);
+  EXPECT_EQ(track.getTime(1), 7.5);
+  EXPECT_EQ(track.getPose(0).getTranslationVector(), vpTranslationVector(2., 3., 4.));
+  EXPECT_NEAR(vpThetaUVector(track.getPose(0).getRotationMatrix())[2], 0.5, 1e-12);
+  EXPECT_EQ(track.getPose(1).getTranslationVector(), vpTranslationVector(-1., 0., 0.));
+  EXPECT_THROW(track.getTime(2), vpException);
+  EXPECT_THROW(track.getPose(2), vpException);
+  // The public bounds are the ones load() applies: a cell just beyond each is refused, one at it accepted.
+  EXPECT_EQ(loadError("bt.csv", "t,tx,ty,tz,tux,tuy,tuz\n1e10,1e7,0,0,10,0,0\n"), "no error");
+  EXPECT_EQ(loadError("t.csv", "t,tx,ty,tz,tux,tuy,tuz\n1.0001e10,0,0,0,0,0,0\n"),
+            ":2: t: 1.0001e10 is beyond +-1e+10 s");
+  EXPECT_EQ(loadError("x.csv", "t,tx,ty,tz,tux,tuy,tuz\n1,0,-1.0001e7,0,0,0,0\n"),
+            ":2: ty: -1.0001e7 is beyond +-1e+07 m");
+  EXPECT_EQ(loadError("r.csv", "t,tx,ty,tz,tux,tuy,tuz\n1,0,0,0,0,10.001,0\n"), ":2: tuy: 10.001 is beyond +-10 rad");
+  EXPECT_EQ(vpSSLOdometryTrack::maxTime(), 1e10);
+  EXPECT_EQ(vpSSLOdometryTrack::maxTranslation(), 1e7);
+  EXPECT_EQ(vpSSLOdometryTrack::maxRotation(), 10.);
+}
+
 TEST(OdometryTrack, InterpolationFollowsAUniformMotionAndNeverExtrapolates)
 {
   // 1 m/s along x while turning at 1 rad/s about z, sampled every 0.5 s.

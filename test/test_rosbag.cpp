@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -207,6 +208,93 @@ TEST_F(Rosbag, NotABagIsOneIoError)
     EXPECT_EQ(e.getStringMessage().rfind(path + ": cannot read the bag: ", 0), 0u) << e.getStringMessage();
   }
   EXPECT_THROW(reader.open(scratch("missing.bag")), vpException);
+}
+
+TEST_F(Rosbag, CorruptLengthsAreRefusedBeforeRosbagStorageReadsThem)
+{
+  // rosbag_storage allocates a record's declared header length before reading it, and parses a chunk's records at
+  // the index's offsets: the reader names the byte instead.
+  const std::string good = scratch("good.bag");
+  ssltest::TestBagOptions options;
+  options.frames = 1;
+  options.width = 32;
+  options.height = 24;
+  ssltest::writeTestBag(good, options);
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  auto openError = [this](const std::string &name, const std::string &content) {
+    const std::string path = scratch(name);
+    std::ofstream(path, std::ios::binary) << content;
+    vpSSLRosbagReader reader;
+    try {
+      reader.open(path);
+    } catch (const vpException &e) {
+      EXPECT_EQ(e.getCode(), vpException::ioError);
+      return e.getStringMessage().substr(path.size());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(openError("good-copy.bag", bytes), "no error");
+  std::string huge = bytes;
+  huge.replace(13, 4, std::string("\xf0\xff\xff\xff", 4));
+  EXPECT_EQ(openError("huge.bag", huge),
+            ": cannot read the bag: byte 13: record header of 4294967280 bytes beyond the end of its file");
+  EXPECT_EQ(openError("cut.bag", bytes.substr(0, bytes.size() - 7)).rfind(": cannot read the bag: byte ", 0), 0u);
+}
+
+TEST_F(Rosbag, BadImageMessagesAreRefusedBeforeTheirDecoders)
+{
+  // A mono8 Image whose data is shorter than step x height (cv_bridge would read past it), a CompressedImage
+  // whose PNG declares 20000 x 20000 pixels (OpenCV would allocate them) and one cut short (libpng would print
+  // on stderr): each a badValue naming the image.
+  ros::Time::init();
+  const std::string path = scratch("bad-images.bag");
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    sensor_msgs::CameraInfo info;
+    info.K = {600., 0., 16., 0., 600., 12., 0., 0., 1.};
+    bag.write("/info", ros::Time(1.), info);
+    sensor_msgs::Image raw;
+    raw.header.stamp = ros::Time(1.);
+    raw.width = 32;
+    raw.height = 24;
+    raw.encoding = "mono8";
+    raw.step = 32;
+    raw.data.assign(32 * 23, 0);
+    bag.write("/raw", ros::Time(1.), raw);
+    sensor_msgs::CompressedImage png;
+    png.header.stamp = ros::Time(1.);
+    png.format = "mono8; png compressed";
+    cv::imencode(".png", cv::Mat(24, 32, CV_8UC1, cv::Scalar(100)), png.data);
+    sensor_msgs::CompressedImage huge = png;
+    const unsigned char size[8] = {0, 0, 0x4E, 0x20, 0, 0, 0x4E, 0x20};
+    std::copy(size, size + 8, huge.data.begin() + 16);
+    bag.write("/huge", ros::Time(1.), huge);
+    sensor_msgs::CompressedImage cut = png;
+    cut.data.resize(cut.data.size() - 20);
+    bag.write("/cut", ros::Time(1.), cut);
+  }
+  auto acquireError = [&](const std::string &topic) {
+    vpSSLRosbagReader reader;
+    reader.open(path);
+    reader.selectTopics(topic, "/info");
+    vpSSLSequenceFrame frame;
+    vpImage<unsigned char> I;
+    try {
+      reader.acquire(frame, I);
+    } catch (const vpException &e) {
+      EXPECT_EQ(e.getCode(), vpException::badValue) << e.getStringMessage();
+      return e.getStringMessage().substr(path.size());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(acquireError("/raw"), ": /raw: image 0: data of 736 bytes, 24 rows of 32 expected");
+  EXPECT_EQ(acquireError("/huge"), ": /huge: image 0: compressed image: PNG header: 20000 x 20000 pixels: a side "
+                                   "exceeds the limit of 16384 pixels");
+  EXPECT_EQ(acquireError("/cut").rfind(": /cut: image 0: compressed image: PNG data truncated", 0), 0u);
 }
 
 TEST_F(Rosbag, FramesFeedTheTrackerDirectly)

@@ -38,4 +38,24 @@ check 1 --input missing.png --output out2
 [ "$(cat afile)" = x ] || fail "the file given as --output was overwritten"
 pass "bad input: one line, documented exit status"
 
+# A truncated JPEG: libjpeg's own warning ("Premature end of JPEG file"), which its default error manager prints
+# on stderr, never reaches it; the tutorial's one line names the file and the problem, with exit status 1. The
+# whole file (a 32 x 24 view of the sample image) reads; it is cut in its scan data, then before it.
+base64 -d > small.jpg <<'JPEG'
+/9j/4AAQSkZJRgABAQAAAQABAAD/2wBDABALDA4MChAODQ4SERATGCgaGBYWGDEjJR0oOjM9PDkzODdASFxOQERXRTc4UG1RV19i
+Z2hnPk1xeXBkeFxlZ2P/wAALCAAYACABAREA/8QAHwAAAQUBAQEBAQEAAAAAAAAAAAECAwQFBgcICQoL/8QAtRAAAgEDAwIEAwUF
+BAQAAAF9AQIDAAQRBRIhMUEGE1FhByJxFDKBkaEII0KxwRVS0fAkM2JyggkKFhcYGRolJicoKSo0NTY3ODk6Q0RFRkdISUpTVFVW
+V1hZWmNkZWZnaGlqc3R1dnd4eXqDhIWGh4iJipKTlJWWl5iZmqKjpKWmp6ipqrKztLW2t7i5usLDxMXGx8jJytLT1NXW19jZ2uHi
+4+Tl5ufo6erx8vP09fb3+Pn6/9oACAEBAAA/AM6KGWdtsMbyMBnCKScfhTWVkYqwKspwQRgg0lFa2is1vb395FjzIowAW+6qk8sR
+1OAM4HXGKlsrnUrx5LO4uDJ9oiYqoKrtQjruCDvhdwBB35X7ppmu2qWdtZxCOJHw27YOe2AT1OOmT161j1ZtNQurJWW2kCBjk/Ip
+J/EirFvqywfKtlbxofv/AGcGFm4I5Kn3NVru4W4FuscZRIIVhUM24kDuTgVXr//Z
+JPEG
+"$BIN" --input small.jpg --output out3 > /dev/null 2> small.err || fail "the whole JPEG: exit code $? $(cat small.err)"
+head -c 400 small.jpg > cut-scan.jpg
+head -c 200 small.jpg > cut-header.jpg
+for cut in cut-scan cut-header; do
+  expect_error 1 "$cut.jpg: JPEG data truncated or corrupt: Premature end of JPEG file" --input "$cut.jpg" --output out3
+done
+pass "truncated JPEG: one line, exit status 1"
+
 e2e_finish

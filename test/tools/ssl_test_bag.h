@@ -47,6 +47,8 @@ struct TestBagOptions
   std::string imageTopic = "/camera/image_raw";
   std::string infoTopic = "/camera/camera_info";
   std::string odometryTopic = "/odom";
+  unsigned int width = 640;  //!< image width; the intrinsics scale with it (focal length 600 px at 640)
+  unsigned int height = 480; //!< image height
 };
 
 /*!
@@ -58,6 +60,10 @@ inline TestBag writeTestBag(const std::string &filename, const TestBagOptions &o
 {
   ros::Time::init();
   TestBag out;
+  out.width = options.width;
+  out.height = options.height;
+  const double scale = options.width / 640.;
+  out.cam.initPersProjWithoutDistortion(600. * scale, 600. * scale, options.width / 2., options.height / 2.);
   vpSSLRenderer renderer(out.cam, out.width, out.height);
   renderer.setTarget(vpSSLTarget::ssl3a3());
   renderer.setSupersampling(2);

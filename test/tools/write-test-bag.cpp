@@ -1,5 +1,6 @@
 // Writes the rosbag tests' bag (ssl_test_bag.h) for test/e2e/rosbag.sh:
-//   write-test-bag OUT.bag [--compressed] [--no-odometry] [--odometry-end SECONDS] [--frames N]
+//   write-test-bag OUT.bag [--compressed] [--no-odometry] [--odometry-end SECONDS] [--frames N] [--size W H]
+// (small sizes make the seed bags of fuzz/corpus/fuzz_rosbag/)
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -9,8 +10,9 @@
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    std::cerr << "usage: write-test-bag OUT.bag [--compressed] [--no-odometry] [--odometry-end S] [--frames N]"
-              << std::endl;
+    std::cerr
+        << "usage: write-test-bag OUT.bag [--compressed] [--no-odometry] [--odometry-end S] [--frames N] [--size W H]"
+        << std::endl;
     return 2;
   }
   ssltest::TestBagOptions options;
@@ -24,6 +26,9 @@ int main(int argc, char **argv)
       options.odometryEnd = std::atof(argv[++i]);
     } else if (a == "--frames" && i + 1 < argc) {
       options.frames = static_cast<unsigned int>(std::atoi(argv[++i]));
+    } else if (a == "--size" && i + 2 < argc) {
+      options.width = static_cast<unsigned int>(std::atoi(argv[++i]));
+      options.height = static_cast<unsigned int>(std::atoi(argv[++i]));
     } else {
       std::cerr << "write-test-bag: unknown option " << a << std::endl;
       return 2;

@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <csetjmp>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
+#include <jpeglib.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -30,7 +33,7 @@ uint32_t bigEndian32(const unsigned char *b)
 }
 
 // Reads exactly n bytes at offset; false when the file is shorter.
-bool readAt(std::ifstream &in, uint64_t offset, unsigned char *buf, size_t n)
+bool readAt(std::istream &in, uint64_t offset, unsigned char *buf, size_t n)
 {
   in.clear();
   in.seekg(static_cast<std::streamoff>(offset));
@@ -60,7 +63,7 @@ uint32_t crc32(const unsigned char *data, size_t n, uint32_t crc)
 
 // Walks the chunks of a PNG file to IEND, checking that each is whole and its CRC right: libpng reports a
 // truncated or corrupt file on stderr before OpenCV returns, and a tool must print one line of its own.
-void pngChunks(std::ifstream &in, const std::string &file, uint64_t fileSize)
+void pngChunks(std::istream &in, const std::string &file, uint64_t fileSize)
 {
   static const uint32_t kCrcInit = 0xFFFFFFFFu;
   uint64_t pos = 8;
@@ -96,9 +99,73 @@ void pngChunks(std::ifstream &in, const std::string &file, uint64_t fileSize)
   }
 }
 
+// libjpeg reports corrupt or truncated data as a warning that its default error manager prints on stderr and
+// decodes the rest as grey; OpenCV's decoder keeps that default, so a tool would print a line of libjpeg besides
+// its own, or accept a half-grey image. This manager prints nothing, keeps libjpeg's message and makes every
+// warning an error.
+struct JpegErrors
+{
+  jpeg_error_mgr pub; // first: libjpeg hands back &pub
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+void jpegFail(j_common_ptr cinfo)
+{
+  JpegErrors *errors = reinterpret_cast<JpegErrors *>(cinfo->err);
+  (*cinfo->err->format_message)(cinfo, errors->message);
+  std::longjmp(errors->jump, 1);
+}
+
+void jpegMessage(j_common_ptr cinfo, int level)
+{
+  // Level -1 is a warning (corrupt data); levels 0 and up are trace messages, off by default.
+  if (level < 0) {
+    jpegFail(cinfo);
+  }
+}
+
+void jpegSilent(j_common_ptr) {}
+
+// Decodes JPEG data with libjpeg down to its last scanline and its end marker (rows discarded, in the cheapest
+// mode: the decode is a check, OpenCV's is the one kept). False with libjpeg's message in \e message on the first
+// error or warning. No C++ object is created between setjmp() and a longjmp() to it.
+bool jpegDecodes(const unsigned char *data, size_t size, char (&message)[JMSG_LENGTH_MAX])
+{
+  jpeg_decompress_struct cinfo;
+  JpegErrors errors;
+  cinfo.err = jpeg_std_error(&errors.pub);
+  errors.pub.error_exit = jpegFail;
+  errors.pub.emit_message = jpegMessage;
+  errors.pub.output_message = jpegSilent;
+  errors.message[0] = '\0';
+  if (setjmp(errors.jump) != 0) {
+    jpeg_destroy_decompress(&cinfo);
+    std::snprintf(message, sizeof(message), "%s", errors.message);
+    return false;
+  }
+  jpeg_create_decompress(&cinfo);
+  jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
+  jpeg_read_header(&cinfo, TRUE);
+  cinfo.dct_method = JDCT_IFAST;
+  cinfo.do_fancy_upsampling = FALSE;
+  if (cinfo.jpeg_color_space == JCS_YCbCr) {
+    cinfo.out_color_space = JCS_GRAYSCALE;
+  }
+  jpeg_start_decompress(&cinfo);
+  JSAMPARRAY row = (*cinfo.mem->alloc_sarray)(reinterpret_cast<j_common_ptr>(&cinfo), JPOOL_IMAGE,
+                                              cinfo.output_width * cinfo.output_components, 1);
+  while (cinfo.output_scanline < cinfo.output_height) {
+    jpeg_read_scanlines(&cinfo, row, 1);
+  }
+  jpeg_finish_decompress(&cinfo);
+  jpeg_destroy_decompress(&cinfo);
+  return true;
+}
+
 // PNM header: magic, width, height and (but for P1, P4) maxval, separated by blanks and comments. Returns the
 // offset of the first pixel byte (one blank after the last field).
-uint64_t pnmHeader(std::ifstream &in, const std::string &file, char kind, uint64_t &width, uint64_t &height,
+uint64_t pnmHeader(std::istream &in, const std::string &file, char kind, uint64_t &width, uint64_t &height,
                    uint64_t &maxval)
 {
   in.clear();
@@ -146,7 +213,7 @@ uint64_t pnmHeader(std::ifstream &in, const std::string &file, char kind, uint64
 }
 
 // JPEG: the size is in the first start-of-frame segment (SOF0-SOF15 but DHT C4, JPG C8, DAC CC).
-void jpegHeader(std::ifstream &in, const std::string &file, uint64_t &width, uint64_t &height)
+void jpegHeader(std::istream &in, const std::string &file, uint64_t &width, uint64_t &height)
 {
   uint64_t pos = 2;
   unsigned char b[9];
@@ -179,58 +246,10 @@ void jpegHeader(std::ifstream &in, const std::string &file, uint64_t &width, uin
   fail(file, "JPEG header: no frame header in the first 4096 segments");
 }
 
-template <typename Type> void readImage(vpImage<Type> &I, const std::string &filename)
+// The format and size of the image whose \e size bytes \e in holds (see vpSSLImageIo::readHeader()).
+std::string formatAndSize(std::istream &in, uint64_t fileSize, const std::string &filename, uint64_t &width,
+                          uint64_t &height)
 {
-  uint64_t width = 0, height = 0;
-  const std::string format = vpSSLImageIo::readHeader(filename, width, height);
-  vpSSLInputLimits::checkImageSize(width, height, filename + ": " + format + " header");
-  if (format == "PNG") {
-    std::ifstream in(filename, std::ios::binary);
-    in.seekg(0, std::ios::end);
-    pngChunks(in, filename, static_cast<uint64_t>(in.tellg()));
-  }
-  cv::Mat m;
-  try {
-    m = cv::imread(filename, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception &e) {
-    fail(filename, "cannot decode the " + format + " data: " + e.what());
-  }
-  if (m.empty()) {
-    fail(filename, "cannot decode the " + format + " data (truncated or corrupt file)");
-  }
-  if (static_cast<uint64_t>(m.cols) != width || static_cast<uint64_t>(m.rows) != height) {
-    std::ostringstream os;
-    os << "decoded " << m.cols << " x " << m.rows << " pixels, the " << format << " header says " << width << " x "
-       << height;
-    fail(filename, os.str());
-  }
-  if (m.depth() == CV_16U) {
-    cv::Mat m8;
-    m.convertTo(m8, CV_8U, 1. / 257.);
-    m = m8;
-  } else if (m.depth() != CV_8U) {
-    fail(filename, format + " data of an unsupported depth (8 or 16 bits per sample)");
-  }
-  if (m.channels() != 1 && m.channels() != 3 && m.channels() != 4) {
-    fail(filename, format + " data with " + std::to_string(m.channels()) + " channels (1, 3 or 4)");
-  }
-  vpImageConvert::convert(m, I);
-  vpSSLInputLimits::checkImage(I, filename.c_str());
-}
-} // namespace
-
-std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &width, uint64_t &height)
-{
-  std::error_code ec;
-  if (std::filesystem::is_directory(filename, ec)) {
-    fail(filename, "is a folder, not an image");
-  }
-  std::ifstream in(filename, std::ios::binary);
-  if (!in) {
-    fail(filename, "missing or unreadable");
-  }
-  in.seekg(0, std::ios::end);
-  const uint64_t fileSize = static_cast<uint64_t>(in.tellg());
   unsigned char b[26] = {0};
   readAt(in, 0, b, 26);
   const unsigned char pngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
@@ -276,6 +295,79 @@ std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &widt
   fail(filename, fileSize == 0 ? "empty file" : "unknown image format (PNG, JPEG, PGM/PPM/PBM or BMP expected)");
 }
 
+// The checks of data whose header is read: a PNG's chunks walked, a JPEG decoded once silently (libpng and
+// libjpeg would print on stderr what OpenCV's decoders ask them).
+void checkEncodedData(std::istream &in, uint64_t size, const std::string &name, const std::string &format)
+{
+  if (format == "PNG") {
+    pngChunks(in, name, size);
+  } else if (format == "JPEG") {
+    std::vector<unsigned char> data(static_cast<size_t>(size));
+    if (!readAt(in, 0, data.data(), data.size())) {
+      fail(name, "JPEG data: read error");
+    }
+    char message[JMSG_LENGTH_MAX];
+    if (!jpegDecodes(data.data(), data.size(), message)) {
+      fail(name, std::string("JPEG data truncated or corrupt: ") + message);
+    }
+  }
+}
+
+template <typename Type> void readImage(vpImage<Type> &I, const std::string &filename)
+{
+  uint64_t width = 0, height = 0;
+  const std::string format = vpSSLImageIo::readHeader(filename, width, height);
+  vpSSLInputLimits::checkImageSize(width, height, filename + ": " + format + " header");
+  {
+    std::ifstream in(filename, std::ios::binary);
+    in.seekg(0, std::ios::end);
+    checkEncodedData(in, static_cast<uint64_t>(in.tellg()), filename, format);
+  }
+  cv::Mat m;
+  try {
+    m = cv::imread(filename, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception &e) {
+    fail(filename, "cannot decode the " + format + " data: " + e.what());
+  }
+  if (m.empty()) {
+    fail(filename, "cannot decode the " + format + " data (truncated or corrupt file)");
+  }
+  if (static_cast<uint64_t>(m.cols) != width || static_cast<uint64_t>(m.rows) != height) {
+    std::ostringstream os;
+    os << "decoded " << m.cols << " x " << m.rows << " pixels, the " << format << " header says " << width << " x "
+       << height;
+    fail(filename, os.str());
+  }
+  if (m.depth() == CV_16U) {
+    cv::Mat m8;
+    m.convertTo(m8, CV_8U, 1. / 257.);
+    m = m8;
+  } else if (m.depth() != CV_8U) {
+    fail(filename, format + " data of an unsupported depth (8 or 16 bits per sample)");
+  }
+  if (m.channels() != 1 && m.channels() != 3 && m.channels() != 4) {
+    fail(filename, format + " data with " + std::to_string(m.channels()) + " channels (1, 3 or 4)");
+  }
+  vpImageConvert::convert(m, I);
+  vpSSLInputLimits::checkImage(I, filename.c_str());
+}
+} // namespace
+
+std::string vpSSLImageIo::readHeader(const std::string &filename, uint64_t &width, uint64_t &height)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(filename, ec)) {
+    fail(filename, "is a folder, not an image");
+  }
+  std::ifstream in(filename, std::ios::binary);
+  if (!in) {
+    fail(filename, "missing or unreadable");
+  }
+  in.seekg(0, std::ios::end);
+  const uint64_t fileSize = static_cast<uint64_t>(in.tellg());
+  return formatAndSize(in, fileSize, filename, width, height);
+}
+
 void vpSSLImageIo::read(vpImage<unsigned char> &I, const std::string &filename)
 {
   readImage(I, filename);
@@ -284,4 +376,14 @@ void vpSSLImageIo::read(vpImage<unsigned char> &I, const std::string &filename)
 void vpSSLImageIo::read(vpImage<vpRGBa> &I, const std::string &filename)
 {
   readImage(I, filename);
+}
+
+std::string vpSSLImageIo::checkData(const std::vector<unsigned char> &data, const std::string &name)
+{
+  std::istringstream in(std::string(data.begin(), data.end()));
+  uint64_t width = 0, height = 0;
+  const std::string format = formatAndSize(in, data.size(), name, width, height);
+  vpSSLInputLimits::checkImageSize(width, height, name + ": " + format + " header");
+  checkEncodedData(in, data.size(), name, format);
+  return format;
 }

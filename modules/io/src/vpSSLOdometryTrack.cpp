@@ -14,11 +14,6 @@
 using namespace vpSSLCsv;
 
 namespace {
-// Bounds of a cell: the times and positions of a dive, not of an overflow.
-const double kMaxTime = 1e10;       // s: Unix time stamps fit
-const double kMaxTranslation = 1e7; // m
-const double kMaxRotation = 10.;    // rad per theta-u element, or per quaternion element
-
 std::string formatTime(double t)
 {
   std::ostringstream os;
@@ -96,7 +91,8 @@ vpSSLOdometryTrack vpSSLOdometryTrack::load(const std::string &filename)
                                                    std::to_string(cells.size()));
     double v[8];
     for (size_t i = 0; i < nValues; ++i) {
-      const double bound = i == 0 ? kMaxTime : (i < 4 ? kMaxTranslation : kMaxRotation);
+      // The times and positions of a dive, not of an overflow.
+      const double bound = i == 0 ? maxTime() : (i < 4 ? maxTranslation() : maxRotation());
       const std::string error = parseNumber(cells[i], v[i], bound, i == 0 ? "s" : (i < 4 ? "m" : "rad"));
       if (!error.empty())
         throw vpException(vpException::badValue, where + (isQuaternion ? quaternion[i] : thetaU[i]) + ": " + error);
@@ -123,6 +119,20 @@ vpSSLOdometryTrack vpSSLOdometryTrack::load(const std::string &filename)
   if (track.m_t.empty())
     throw vpException(vpException::badValue, filename + ":0: file: no odometry row after the header");
   return track;
+}
+
+double vpSSLOdometryTrack::getTime(size_t i) const
+{
+  if (i >= m_t.size())
+    throw vpException(vpException::badValue,
+                      "odometry: sample " + std::to_string(i) + " of " + std::to_string(m_t.size()));
+  return m_t[i];
+}
+
+const vpHomogeneousMatrix &vpSSLOdometryTrack::getPose(size_t i) const
+{
+  getTime(i);
+  return m_oMv[i];
 }
 
 bool vpSSLOdometryTrack::covers(double t) const

@@ -19,7 +19,10 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpQuaternionVector.h>
+#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
+
+#include "vpSSLRosbagCheck.h"
 
 namespace {
 const char *const kImage = "sensor_msgs/Image";
@@ -37,6 +40,35 @@ vpHomogeneousMatrix nedFromEnu()
 vpHomogeneousMatrix fluFromFrd()
 {
   return vpHomogeneousMatrix(0., 0., 0., M_PI, 0., 0.);
+}
+
+// The message as \e Message, once its serialized bytes hold every string and array they declare
+// (vpSSLRosbagCheck::checkMessage()): roscpp_serialization resizes an array to its declared length first. Null when
+// the message is of another type (its md5sum differs).
+template <typename Message>
+typename Message::ConstPtr instantiate(const rosbag::MessageInstance &m, const std::string &at)
+{
+  std::vector<uint8_t> bytes(m.size());
+  ros::serialization::OStream stream(bytes.data(), static_cast<uint32_t>(bytes.size()));
+  m.write(stream);
+  vpSSLRosbagCheck::checkMessage(ros::message_traits::datatype<Message>(), bytes.data(), bytes.size(), at);
+  return m.instantiate<Message>();
+}
+
+// cv_bridge builds a matrix of height rows of step bytes on the message's data without comparing their sizes.
+void checkImageData(const sensor_msgs::Image &msg, const std::string &at)
+{
+  vpSSLInputLimits::checkImageSize(msg.width, msg.height, at + "size");
+  const uint64_t pixel = static_cast<uint64_t>(sensor_msgs::image_encodings::numChannels(msg.encoding)) *
+                         ((sensor_msgs::image_encodings::bitDepth(msg.encoding) + 7) / 8);
+  if (msg.step < msg.width * pixel)
+    throw vpException(vpException::badValue, at + "step " + std::to_string(msg.step) + " shorter than a row of " +
+                                                 std::to_string(msg.width) + " pixels of " + std::to_string(pixel) +
+                                                 " bytes");
+  if (static_cast<uint64_t>(msg.step) * msg.height > msg.data.size())
+    throw vpException(vpException::badValue, at + "data of " + std::to_string(msg.data.size()) + " bytes, " +
+                                                 std::to_string(msg.height) + " rows of " + std::to_string(msg.step) +
+                                                 " expected");
 }
 } // namespace
 
@@ -86,10 +118,16 @@ public:
     const std::string at = where(imageTopic) + "image " + std::to_string(index) + ": ";
     try {
       if (m.getDataType() == kCompressedImage) {
-        sensor_msgs::CompressedImage::ConstPtr msg = m.instantiate<sensor_msgs::CompressedImage>();
+        sensor_msgs::CompressedImage::ConstPtr msg = instantiate<sensor_msgs::CompressedImage>(m, at);
         if (!msg)
           throw vpException(vpException::badValue, at + "not a readable " + std::string(kCompressedImage));
         stamp = msg->header.stamp;
+        // The size within the limits before OpenCV allocates it, and no line of libpng or libjpeg on stderr.
+        try {
+          vpSSLImageIo::checkData(msg->data, at + "compressed image");
+        } catch (const vpException &e) {
+          throw vpException(vpException::badValue, e.getStringMessage());
+        }
         image = cv::imdecode(msg->data, cv::IMREAD_UNCHANGED);
         if (image.empty())
           throw vpException(vpException::badValue,
@@ -99,9 +137,10 @@ public:
         if (image.channels() == 4)
           cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
       } else {
-        sensor_msgs::Image::ConstPtr msg = m.instantiate<sensor_msgs::Image>();
+        sensor_msgs::Image::ConstPtr msg = instantiate<sensor_msgs::Image>(m, at);
         if (!msg)
           throw vpException(vpException::badValue, at + "not a readable " + std::string(kImage));
+        checkImageData(*msg, at);
         stamp = msg->header.stamp;
         const bool colour = sensor_msgs::image_encodings::isColor(msg->encoding) ||
                             sensor_msgs::image_encodings::isBayer(msg->encoding);
@@ -144,6 +183,8 @@ void vpSSLRosbagReader::open(const std::string &filename)
 {
   close();
   m_impl->filename = filename;
+  // rosbag_storage trusts the lengths and offsets it reads: a corrupt bag is refused before it sees it.
+  vpSSLRosbagCheck::checkBagFile(filename);
   try {
     m_impl->bag.open(filename, rosbag::bagmode::Read);
     m_impl->isOpen = true;
@@ -197,7 +238,8 @@ void vpSSLRosbagReader::selectTopics(const std::string &imageTopic, const std::s
   try {
     // Intrinsics: the first CameraInfo message.
     rosbag::View infoView(d.bag, rosbag::TopicQuery(cameraInfoTopic));
-    sensor_msgs::CameraInfo::ConstPtr info = infoView.begin()->instantiate<sensor_msgs::CameraInfo>();
+    sensor_msgs::CameraInfo::ConstPtr info =
+        instantiate<sensor_msgs::CameraInfo>(*infoView.begin(), d.where(cameraInfoTopic) + "message 0: ");
     if (!info)
       throw vpException(vpException::badValue, d.where(cameraInfoTopic) + "not a readable " + kCameraInfo);
     for (size_t i = 0; i < info->D.size(); ++i) {
@@ -220,13 +262,20 @@ void vpSSLRosbagReader::selectTopics(const std::string &imageTopic, const std::s
       const vpHomogeneousMatrix nedMenu = nedFromEnu(), fluMfrd = fluFromFrd();
       unsigned int n = 0;
       for (const rosbag::MessageInstance &m : rosbag::View(d.bag, rosbag::TopicQuery(odometryTopic))) {
-        nav_msgs::Odometry::ConstPtr odom = m.instantiate<nav_msgs::Odometry>();
         const std::string at = d.where(odometryTopic) + "message " + std::to_string(n++) + ": ";
+        nav_msgs::Odometry::ConstPtr odom = instantiate<nav_msgs::Odometry>(m, at);
         if (!odom)
           throw vpException(vpException::badValue, at + "not a readable " + kOdometry);
         const geometry_msgs::Pose &p = odom->pose.pose;
+        const double position[3] = {p.position.x, p.position.y, p.position.z};
+        for (int i = 0; i < 3; ++i) {
+          if (!(std::fabs(position[i]) <= vpSSLOdometryTrack::maxTranslation()))
+            throw vpException(vpException::badValue, at + "position." + "xyz"[i] + " " + std::to_string(position[i]) +
+                                                         " is not finite or beyond +-1e7 m");
+        }
         const vpQuaternionVector q(p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w);
-        if (std::fabs(q.magnitude() - 1.) > 1e-3)
+        // Written so that a NaN element fails too.
+        if (!(std::fabs(q.magnitude() - 1.) <= 1e-3))
           throw vpException(vpException::badValue, at + "orientation is not a unit quaternion");
         vpHomogeneousMatrix oMv(vpTranslationVector(p.position.x, p.position.y, p.position.z),
                                 vpRotationMatrix(vpQuaternionVector(q.x() / q.magnitude(), q.y() / q.magnitude(),

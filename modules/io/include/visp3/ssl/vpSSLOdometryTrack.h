@@ -74,12 +74,28 @@ public:
 
   //! Number of samples.
   size_t size() const { return m_t.size(); }
+  /*!
+    Time of sample \e i (s), as read or added.
+    \exception vpException (badValue) when \e i >= size().
+  */
+  double getTime(size_t i) const;
+  /*!
+    Pose \c oMv of sample \e i, as read or added.
+    \exception vpException (badValue) when \e i >= size().
+  */
+  const vpHomogeneousMatrix &getPose(size_t i) const;
   //! Time of the first sample (s); 0 for an empty track.
   double getStartTime() const { return m_t.empty() ? 0. : m_t.front(); }
   //! Time of the last sample (s); 0 for an empty track.
   double getEndTime() const { return m_t.empty() ? 0. : m_t.back(); }
   //! Most samples a track holds: 4 million (11 hours at 100 Hz).
   static constexpr size_t maxSamples() { return 4000000; }
+  //! Largest |t| of a row load() accepts (s): Unix time stamps fit.
+  static constexpr double maxTime() { return 1e10; }
+  //! Largest |tx|, |ty|, |tz| of a row load() accepts (m).
+  static constexpr double maxTranslation() { return 1e7; }
+  //! Largest |element| of a row's theta-u vector (rad) or quaternion that load() accepts.
+  static constexpr double maxRotation() { return 10.; }
 
 private:
   std::vector<double> m_t;
