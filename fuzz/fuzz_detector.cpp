@@ -44,6 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
       vpSSLImageIo::read(I, path.string());
       detector.setSmallLandmarkMode(false);
       detector.setWindow(40);
+      detector.setShortWindow(10);
       detect(detector, I);
       return 0;
     }
@@ -53,6 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     detector.setBrightnessNormalization(settings & 2);
     detector.setDecimation(settings & 4 ? 2 : 1);
     detector.setWindow(2 + in.byte() % 127);
+    detector.setShortWindow(settings & 8 ? 0u : 2u + 8u * (settings >> 4)); // 0, or 2 to 122
     I.resize(h, w, 0);
     if (in.left() > 0) {
       const size_t n = in.left();
