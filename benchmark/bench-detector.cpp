@@ -46,10 +46,10 @@
 #include <visp3/core/vpRect.h>
 #include <visp3/detection/vpDetectorAprilTag.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include "vpSSLDetectorTestAccess.h"
 

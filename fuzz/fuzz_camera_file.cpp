@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include <visp3/core/vpException.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "fuzz_common.h"
 

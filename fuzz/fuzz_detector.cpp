@@ -10,8 +10,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "fuzz_common.h"
 

@@ -6,7 +6,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 #include "fuzz_common.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include <visp3/core/vpException.h>
-#include <visp3/ssl/vpSSLOdometryTrack.h>
+#include <visp3/ssl_io/vpSSLOdometryTrack.h>
 
 #include "fuzz_common.h"
 

@@ -8,7 +8,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
-#include <visp3/ssl/vpSSLRosbagReader.h>
+#include <visp3/ssl_rosbag/vpSSLRosbagReader.h>
 
 #include "fuzz_common.h"
 

@@ -8,8 +8,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 #include "fuzz_common.h"
 

@@ -5,7 +5,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 #include "fuzz_common.h"
 

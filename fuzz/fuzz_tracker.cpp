@@ -10,9 +10,9 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpPoseVector.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLParticleFilter.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "fuzz_common.h"
 

@@ -6,9 +6,9 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRzyxVector.h>
-#include <visp3/ssl/vpSSLAuvSimulator.h>
 #include <visp3/ssl/vpSSLFinite.h>
-#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl_sim/vpSSLAuvSimulator.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 #include "ssl_test_utils.h"
 

@@ -8,10 +8,10 @@
 
 #include <visp3/core/vpPoint.h>
 #include <visp3/core/vpRxyzVector.h>
-#include <visp3/ssl/vpSSLAuvSimulator.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
-#include <visp3/ssl/vpSSLScenario.h>
-#include <visp3/ssl/vpSSLServoInput.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
+#include <visp3/ssl_sim/vpSSLAuvSimulator.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 TEST(AuvClosedLoop, HomingReachesTheStandOffWithAPerfectSensor)
 {

@@ -1,6 +1,6 @@
 /*
-  The AUV driver skeleton users copy (modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h): each control frame of
-  vpRobot::setVelocity() reaches the vehicle as the body twist it means, within the limits and with its
+  The AUV driver skeleton users copy (modules/bench/include/visp3/ssl_harness/vpSSLRobotAuvTemplate.h): each control
+  frame of vpRobot::setVelocity() reaches the vehicle as the body twist it means, within the limits and with its
   direction kept, and what is not a velocity command is refused.
 */
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include <visp3/core/vpExponentialMap.h>
 #include <visp3/core/vpMath.h>
-#include <visp3/ssl/vpSSLServoLaw.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
 
-#include <visp3/ssl/vpSSLRobotAuvTemplate.h>
+#include <visp3/ssl_harness/vpSSLRobotAuvTemplate.h>
 
 namespace {
 // A camera that gives a black image: the tests read the navigation only.

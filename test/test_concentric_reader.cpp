@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <visp3/ssl/vpSSLConcentricReader.h>
-#include <visp3/ssl/vpSSLCorpusPhotos.h>
-#include <visp3/ssl/vpSSLCorpusSheet.h>
-#include <visp3/ssl/vpSSLCorpusView.h>
+#include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
+#include <visp3/ssl_bench/vpSSLCorpusSheet.h>
+#include <visp3/ssl_bench/vpSSLCorpusView.h>
 
 namespace {
 // A view without water loss, vignetting or noise (each case adds what it tests), the sheet on dark water.

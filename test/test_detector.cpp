@@ -12,7 +12,7 @@
 #include <visp3/core/vpGaussRand.h>
 #include <visp3/core/vpUniRand.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_test_utils.h"
 

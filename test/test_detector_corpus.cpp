@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include <visp3/ssl/vpSSLCorpusEvaluator.h>
-#include <visp3/ssl/vpSSLCorpusPhotos.h>
-#include <visp3/ssl/vpSSLCorpusSheet.h>
-#include <visp3/ssl/vpSSLCorpusView.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl_bench/vpSSLCorpusEvaluator.h>
+#include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
+#include <visp3/ssl_bench/vpSSLCorpusSheet.h>
+#include <visp3/ssl_bench/vpSSLCorpusView.h>
 
 namespace {
 // Recall of B over the eligible views of the fixed subset below (seed 7, 70 views) with the default detector, as

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 #include "ssl_test_utils.h"
 

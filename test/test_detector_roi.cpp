@@ -15,8 +15,8 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRect.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "allocation_counter.h"
 #include "vpSSLDetectorTestAccess.h"

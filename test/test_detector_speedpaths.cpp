@@ -27,7 +27,7 @@
 #include <visp3/core/vpUniRand.h>
 #include <visp3/ssl/vpSSLBrightnessNormalizer.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "vpSSLDetectorTestAccess.h"
 

@@ -15,16 +15,16 @@
 #include <visp3/core/vpException.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLBrightnessNormalizer.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPeakDetector.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
 
 namespace fs = std::filesystem;
 

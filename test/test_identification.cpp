@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_test_utils.h"
 

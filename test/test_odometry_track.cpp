@@ -12,7 +12,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpQuaternionVector.h>
 #include <visp3/core/vpThetaUVector.h>
-#include <visp3/ssl/vpSSLOdometryTrack.h>
+#include <visp3/ssl_io/vpSSLOdometryTrack.h>
 
 namespace {
 std::string writeCsv(const std::string &name, const std::string &text)

@@ -8,7 +8,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageTools.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLPlot.h>
+#include <visp3/ssl_sim/vpSSLPlot.h>
 
 namespace {
 bool isColor(const vpRGBa &p, const vpColor &c, int tol = 40)

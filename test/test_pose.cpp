@@ -13,8 +13,8 @@
 #include <visp3/core/vpUniRand.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include "ssl_test_utils.h"
 

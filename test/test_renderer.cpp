@@ -13,7 +13,7 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLPattern.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_test_utils.h"
 

@@ -11,8 +11,8 @@
 
 #include <unistd.h>
 
-#include <visp3/ssl/vpSSLRosbagReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_rosbag/vpSSLRosbagReader.h>
 
 #include "ssl_test_bag.h"
 

@@ -15,8 +15,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpXmlParserCamera.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
-#include <visp3/ssl/vpSSLSequenceWriter.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_io/vpSSLSequenceWriter.h>
 
 namespace fs = std::filesystem;
 

@@ -13,8 +13,8 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpUniRand.h>
 #include <visp3/robot/vpSimulatorCamera.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
 
 namespace {
 const double kDt = 0.04;

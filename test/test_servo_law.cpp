@@ -16,9 +16,9 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpUniRand.h>
 #include <visp3/robot/vpSimulatorCamera.h>
-#include <visp3/ssl/vpSSLServoLaw.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
 
 namespace {
 const double kDt = 0.04; // vpSimulatorCamera's sampling time

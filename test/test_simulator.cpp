@@ -16,13 +16,13 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpRzyxVector.h>
 #include <visp3/detection/vpDetectorAprilTag.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLBackground.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLPattern.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLScenario.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLBackground.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include "ssl_test_utils.h"
 

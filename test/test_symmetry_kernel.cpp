@@ -19,7 +19,7 @@
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpUniRand.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "../modules/ssl/src/vpSSLSymmetryKernel.h"
 

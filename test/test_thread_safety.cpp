@@ -12,8 +12,8 @@
 
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
-#include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_test_utils.h"
 

@@ -16,10 +16,10 @@
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLScenario.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 #include "ssl_test_sequences.h"
 #include "ssl_test_utils.h"

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include <visp3/core/vpImage.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLScenario.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 namespace {
 // A straight final approach along the target's axis, rendered without water at 10 fps: camera from 2 m to 0.12 m

@@ -16,8 +16,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/ssl/vpSSLFinite.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 #include "ssl_test_utils.h"
 

@@ -14,9 +14,9 @@
 
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLFinite.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_test_sequences.h"
 #include "ssl_test_utils.h"

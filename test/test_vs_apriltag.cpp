@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <visp3/core/vpIoTools.h>
-#include <visp3/ssl/vpSSLAprilTagBaseline.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
-#include <visp3/ssl/vpSSLDetectionStats.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_harness/vpSSLDetectionStats.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 namespace {
 const std::string kVispBenchmark = std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/benchmark/640x480";

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include "ssl_test_utils.h"
 

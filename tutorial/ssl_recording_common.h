@@ -14,7 +14,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 #include "ssl_tutorial_common.h"
 

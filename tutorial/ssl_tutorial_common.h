@@ -24,7 +24,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/gui/vpDisplayX.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
 
 #include "ssl_tutorial_options.h"
 

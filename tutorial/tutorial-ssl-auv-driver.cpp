@@ -1,9 +1,9 @@
 //! \example tutorial-ssl-auv-driver.cpp
 //! The homing loop of doc/servo.md on a vehicle driver: vpSSLRobotAuvTemplate
-//! (modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h), the skeleton of a ViSP robot driver to copy for a real
-//! AUV, driven by vpSSLHomingBehaviour through vpRobot::setVelocity(). Its camera here is a vpFrameGrabber that renders
-//! the ssl3-a3 target at the vehicle's pose; on a vehicle it is the camera's grabber (vpV4l2Grabber, ...), and the loop
-//! below stays the same.
+//! (modules/bench/include/visp3/ssl_harness/vpSSLRobotAuvTemplate.h), the skeleton of a ViSP robot driver to copy for a
+//! real AUV, driven by vpSSLHomingBehaviour through vpRobot::setVelocity(). Its camera here is a vpFrameGrabber that
+//! renders the ssl3-a3 target at the vehicle's pose; on a vehicle it is the camera's grabber (vpV4l2Grabber, ...), and
+//! the loop below stays the same.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,21 +12,21 @@
 #include <visp3/core/vpFrameGrabber.h>
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpMath.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLServoInput.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_option_loop.h"
-#include <visp3/ssl/vpSSLRobotAuvTemplate.h>
+#include <visp3/ssl_harness/vpSSLRobotAuvTemplate.h>
 
 namespace {
 const char *kProgram = "tutorial-ssl-auv-driver";
 
 const char *kUsage = R"(Usage: tutorial-ssl-auv-driver [options]
 Runs the homing loop of doc/servo.md on vpSSLRobotAuvTemplate, the skeleton of a ViSP robot driver for an AUV
-(modules/bench/include/visp3/ssl/vpSSLRobotAuvTemplate.h: copy it and fill in your vehicle's autopilot and
+(modules/bench/include/visp3/ssl_harness/vpSSLRobotAuvTemplate.h: copy it and fill in your vehicle's autopilot and
 navigation). As shipped its navigation is a perfect vehicle and its camera renders the ssl3-a3 target at the
 vehicle's pose (320x240, the target 4 m ahead, off the axis and turned). Each step: acquire (image, odometry, depth,
 collision), track, vpSSLHomingBehaviour::update(), apply() (setVelocity(ARTICULAR_FRAME, surge sway heave p q r)).

@@ -13,12 +13,12 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpTime.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_canvas.h"

@@ -19,11 +19,11 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/detection/vpDetectorAprilTag.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLCorpusEvaluator.h>
-#include <visp3/ssl/vpSSLCorpusPhotos.h>
-#include <visp3/ssl/vpSSLCorpusSheet.h>
-#include <visp3/ssl/vpSSLCorpusView.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl_bench/vpSSLCorpusEvaluator.h>
+#include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
+#include <visp3/ssl_bench/vpSSLCorpusSheet.h>
+#include <visp3/ssl_bench/vpSSLCorpusView.h>
 
 #include "ssl_tutorial_options.h"
 

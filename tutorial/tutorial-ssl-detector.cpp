@@ -14,11 +14,11 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_common.h"

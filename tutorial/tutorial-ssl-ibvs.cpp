@@ -19,10 +19,10 @@
 #include <visp3/core/vpThetaUVector.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/robot/vpSimulatorCamera.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLServoInput.h>
-#include <visp3/ssl/vpSSLServoLaw.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include "ssl_tutorial_common.h"
 #include "ssl_tutorial_option_loop.h"

@@ -15,16 +15,16 @@
 
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpMath.h>
-#include <visp3/ssl/vpSSLAprilTagBaseline.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPattern.h>
-#include <visp3/ssl/vpSSLPlot.h>
 #include <visp3/ssl/vpSSLRadiusEstimator.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLPlot.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 // Which regions of interest a frame matched (Table 1): the library's test access, as in bench-detector.
 #include "vpSSLDetectorTestAccess.h"

@@ -13,9 +13,9 @@
 #include <opencv2/videoio.hpp>
 
 #include <visp3/core/vpImageConvert.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLOdometryTrack.h>
-#include <visp3/ssl/vpSSLSequenceWriter.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLOdometryTrack.h>
+#include <visp3/ssl_io/vpSSLSequenceWriter.h>
 
 #include "ssl_recording_common.h"
 #include "ssl_tutorial_common.h"

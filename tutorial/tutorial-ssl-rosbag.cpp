@@ -5,8 +5,8 @@
 #include <iostream>
 #include <string>
 
-#include <visp3/ssl/vpSSLRosbagReader.h>
-#include <visp3/ssl/vpSSLSequenceWriter.h>
+#include <visp3/ssl_io/vpSSLSequenceWriter.h>
+#include <visp3/ssl_rosbag/vpSSLRosbagReader.h>
 
 #include "ssl_recording_common.h"
 #include "ssl_tutorial_common.h"

@@ -27,11 +27,11 @@
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpRxyzVector.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
-#include <visp3/ssl/vpSSLClosedLoop.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
-#include <visp3/ssl/vpSSLPlot.h>
-#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_harness/vpSSLClosedLoop.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
+#include <visp3/ssl_sim/vpSSLPlot.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 #include "ssl_tutorial_closed_loop_options.h"
 #include "ssl_tutorial_common.h"

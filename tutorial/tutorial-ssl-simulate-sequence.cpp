@@ -15,14 +15,14 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpPoseVector.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLBackground.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLScenario.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
-#include <visp3/ssl/vpSSLSequenceWriter.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceWriter.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLBackground.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include "ssl_tutorial_common.h"
 

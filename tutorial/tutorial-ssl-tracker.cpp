@@ -18,8 +18,8 @@
 #include <visp3/core/vpMeterPixelConversion.h>
 #include <visp3/core/vpThetaUVector.h>
 #include <visp3/io/vpImageIo.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 #include "ssl_tutorial_camera_options.h"
 #include "ssl_tutorial_common.h"

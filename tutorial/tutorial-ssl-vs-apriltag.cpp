@@ -16,14 +16,14 @@
 #include <unistd.h>
 
 #include <visp3/core/vpIoTools.h>
-#include <visp3/ssl/vpSSLAprilTagBaseline.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
-#include <visp3/ssl/vpSSLDetectionStats.h>
-#include <visp3/ssl/vpSSLPlot.h>
-#include <visp3/ssl/vpSSLSequenceReader.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl/vpSSLTracker.h>
+#include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_harness/vpSSLDetectionStats.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLPlot.h>
 
 #include "ssl_tutorial_common.h"
 

@@ -5,8 +5,8 @@
 
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 int main()
 {

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLServoInput.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLServoLaw.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
 
 #include <algorithm>
 #include <cmath>

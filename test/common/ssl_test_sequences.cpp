@@ -1,6 +1,6 @@
 #include "ssl_test_sequences.h"
 
-#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
 namespace sslt {
 

@@ -11,8 +11,8 @@
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
 
 namespace sslt {
 

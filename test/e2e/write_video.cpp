@@ -9,7 +9,7 @@
 #include <opencv2/videoio.hpp>
 
 #include <visp3/core/vpImageConvert.h>
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 int main(int argc, char **argv)
 {

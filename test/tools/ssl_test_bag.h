@@ -20,8 +20,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpQuaternionVector.h>
-#include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 namespace ssltest {
 

@@ -7,9 +7,9 @@
 #include <opencv2/videoio.hpp>
 
 #include <visp3/core/vpImageConvert.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLRenderer.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 int main(int argc, char **argv)
 {

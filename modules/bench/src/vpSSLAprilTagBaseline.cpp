@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLAprilTagBaseline.h>
+#include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
 
 #include <cmath>
 #include <fstream>
@@ -6,8 +6,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpPoseVector.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 vpSSLAprilTagBaseline::vpSSLAprilTagBaseline(const vpSSLAprilTagSheet &sheet, const vpCameraParameters &cam)
     : m_detector(vpDetectorAprilTag::TAG_36h11), m_id(sheet.getId()), m_tagSize(sheet.getTagSize()), m_cam(cam),

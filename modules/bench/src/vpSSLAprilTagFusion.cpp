@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLAprilTagFusion.h>
+#include <visp3/ssl_harness/vpSSLAprilTagFusion.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLBenchMath.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLClosedLoop.h>
+#include <visp3/ssl_harness/vpSSLClosedLoop.h>
 
 #include <algorithm>
 #include <array>
@@ -9,10 +9,10 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpMath.h>
 #include <visp3/core/vpRxyzVector.h>
-#include <visp3/ssl/vpSSLBenchMath.h>
-#include <visp3/ssl/vpSSLCameraFile.h>
-#include <visp3/ssl/vpSSLScenario.h>
-#include <visp3/ssl/vpSSLServoLaw.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 const std::vector<vpSSLClosedLoop::Method> &vpSSLClosedLoop::allMethods()
 {

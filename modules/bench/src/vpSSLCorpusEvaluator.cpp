@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCorpusEvaluator.h>
+#include <visp3/ssl_bench/vpSSLCorpusEvaluator.h>
 
 #include <algorithm>
 #include <cmath>

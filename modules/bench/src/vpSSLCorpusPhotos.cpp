@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCorpusPhotos.h>
+#include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCorpusSheet.h>
+#include <visp3/ssl_bench/vpSSLCorpusSheet.h>
 
 #include <algorithm>
 #include <cmath>

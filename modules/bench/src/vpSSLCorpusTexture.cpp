@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCorpusTexture.h>
+#include <visp3/ssl_bench/vpSSLCorpusTexture.h>
 
 #include <algorithm>
 #include <cmath>

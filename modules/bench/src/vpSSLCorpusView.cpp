@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCorpusView.h>
+#include <visp3/ssl_bench/vpSSLCorpusView.h>
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <opencv2/imgproc.hpp>
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
-#include <visp3/ssl/vpSSLCorpusRandom.h>
-#include <visp3/ssl/vpSSLCorpusTexture.h>
+#include <visp3/ssl_bench/vpSSLCorpusRandom.h>
+#include <visp3/ssl_bench/vpSSLCorpusTexture.h>
 
 namespace {
 const double kPi = 3.14159265358979323846;

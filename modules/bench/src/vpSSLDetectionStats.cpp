@@ -1,10 +1,10 @@
-#include <visp3/ssl/vpSSLDetectionStats.h>
+#include <visp3/ssl_harness/vpSSLDetectionStats.h>
 
 #include <cmath>
 #include <map>
 #include <utility>
 
-#include <visp3/ssl/vpSSLBenchMath.h>
+#include <visp3/ssl_harness/vpSSLBenchMath.h>
 
 vpSSLDetectionStats::vpSSLDetectionStats()
     : bandFrames(vpSSLBenchMath::bandEdges().size() - 1, 0), bandDetected(vpSSLBenchMath::bandEdges().size() - 1, 0)

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
 
 #include <charconv>
 #include <cmath>

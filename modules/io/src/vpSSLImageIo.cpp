@@ -2,7 +2,7 @@
   \file vpSSLImageIo.cpp
   \brief Header sizes of PNG, JPEG, PNM and BMP files, and decoding through OpenCV.
 */
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLOdometryTrack.h>
+#include <visp3/ssl_io/vpSSLOdometryTrack.h>
 
 #include <algorithm>
 #include <cmath>

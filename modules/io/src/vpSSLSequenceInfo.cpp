@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 #include <charconv>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include <visp3/ssl/vpSSLSequenceReader.h>
+#include <visp3/ssl_io/vpSSLSequenceReader.h>
 
-#include <visp3/ssl/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLCameraFile.h>
 
 #include <charconv>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include <visp3/core/vpException.h>
-#include <visp3/ssl/vpSSLImageIo.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "vpSSLCsv.h"
 

@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLSequenceWriter.h>
+#include <visp3/ssl_io/vpSSLSequenceWriter.h>
 
 #include <charconv>
 #include <cmath>

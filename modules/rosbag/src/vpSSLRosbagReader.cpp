@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLRosbagReader.h>
+#include <visp3/ssl_rosbag/vpSSLRosbagReader.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +19,8 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
 #include <visp3/core/vpQuaternionVector.h>
-#include <visp3/ssl/vpSSLImageIo.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 
 #include "vpSSLRosbagCheck.h"
 

@@ -2,7 +2,7 @@
   \file vpSSLAprilTagSheet.cpp
   \brief AprilTag 36h11 sheet: code bits from OpenCV's aruco dictionary, frames of vpDetectorAprilTag.
 */
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 
 #include <cmath>
 #include <cstdio>

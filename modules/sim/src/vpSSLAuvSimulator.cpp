@@ -2,7 +2,7 @@
   \file vpSSLAuvSimulator.cpp
   \brief Rigid-body dynamics (Fossen's diagonal model), autopilot, current, contact and sensors of the simulated AUV.
 */
-#include <visp3/ssl/vpSSLAuvSimulator.h>
+#include <visp3/ssl_sim/vpSSLAuvSimulator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/core/vpVelocityTwistMatrix.h>
 #include <visp3/ssl/vpSSLFinite.h>
-#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 namespace {
 const double kGravity = 9.81;

@@ -2,7 +2,7 @@
   \file vpSSLBackground.cpp
   \brief Backdrops of the simulator: procedural seabed and real photographs.
 */
-#include <visp3/ssl/vpSSLBackground.h>
+#include <visp3/ssl_sim/vpSSLBackground.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpUniRand.h>
-#include <visp3/ssl/vpSSLImageIo.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 namespace {
 const char *kDebianImages = "/usr/share/visp-images-data/ViSP-images";

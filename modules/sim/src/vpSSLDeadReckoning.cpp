@@ -2,7 +2,7 @@
   \file vpSSLDeadReckoning.cpp
   \brief Dead reckoning from IMU attitude, compass heading, depth sensor and integrated body velocity.
 */
-#include <visp3/ssl/vpSSLDeadReckoning.h>
+#include <visp3/ssl_sim/vpSSLDeadReckoning.h>
 
 #include <cmath>
 

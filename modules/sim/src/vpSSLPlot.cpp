@@ -1,4 +1,4 @@
-#include <visp3/ssl/vpSSLPlot.h>
+#include <visp3/ssl_sim/vpSSLPlot.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
   \file vpSSLRenderer.cpp
   \brief Ray casting of a printed SSL target: exact pattern, box-filtered by supersampling.
 */
-#include <visp3/ssl/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
   \brief The scenario trajectories: approach, orbit, spiral, leave-return, left-right (paper Fig. 8) and
   surface reflection (paper Sec. 3.1).
 */
-#include <visp3/ssl/vpSSLScenario.h>
+#include <visp3/ssl_sim/vpSSLScenario.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
   \brief Revised underwater image formation model (Akkaynak and Treibitz 2018) with forward scatter,
   sunlight or lamp, caustics and Poisson-Gaussian sensor noise.
 */
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 #include <algorithm>
 #include <cmath>

@@ -13,8 +13,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 /*!
   \class vpSSLSequenceWriter

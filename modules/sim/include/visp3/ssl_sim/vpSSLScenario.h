@@ -11,8 +11,8 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpPlane.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLDeadReckoning.h>
-#include <visp3/ssl/vpSSLScenarioFrame.h>
+#include <visp3/ssl_sim/vpSSLDeadReckoning.h>
+#include <visp3/ssl_sim/vpSSLScenarioFrame.h>
 
 /*!
   \class vpSSLScenario

@@ -14,7 +14,7 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpImagePoint.h>
 #include <visp3/detection/vpDetectorAprilTag.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 
 /*!
   \class vpSSLAprilTagBaseline

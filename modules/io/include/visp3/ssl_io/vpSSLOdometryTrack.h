@@ -11,7 +11,7 @@
 
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
 
 /*!
   \class vpSSLOdometryTrack

@@ -12,7 +12,7 @@
 #include <visp3/core/vpTranslationVector.h>
 #include <visp3/robot/vpRobot.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLDeadReckoning.h>
+#include <visp3/ssl_sim/vpSSLDeadReckoning.h>
 
 /*!
   \class vpSSLAuvSimulator

@@ -12,8 +12,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpImagePoint.h>
 #include <visp3/core/vpPlane.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 
 /*!
   \class vpSSLRenderer

@@ -13,8 +13,10 @@
 
 /*!
   \defgroup group_ssl_harness Benchmark and closed-loop harness
-  The code the comparison tutorials and their tests share (visp_ssl_harness): the AprilTag baseline, the
-  statistics of a detection benchmark, and the simulated closed loop of the servo tutorials.
+  Library visp_ssl_harness, headers <tt>\<visp3/ssl_harness/...\></tt>, built with the tutorials, tests or
+  benchmarks and not installed (in the project: <tt>target_link_libraries(app visp_ssl_harness)</tt>): the code the
+  comparison tutorials and their tests share: the AprilTag baseline, the statistics of a detection benchmark, and
+  the simulated closed loop of the servo tutorials.
 */
 
 /*!

@@ -12,9 +12,9 @@
 #include <opencv2/core.hpp>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
-#include <visp3/ssl/vpSSLCorpusPhotos.h>
-#include <visp3/ssl/vpSSLCorpusSheet.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
+#include <visp3/ssl_bench/vpSSLCorpusSheet.h>
 
 /*!
   \struct vpSSLCorpusCamera

@@ -13,7 +13,7 @@
 #include <visp3/core/vpMatrix.h>
 #include <visp3/core/vpVelocityTwistMatrix.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLServoInput.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
 #include <visp3/visual_features/vpFeatureDepth.h>
 #include <visp3/visual_features/vpFeaturePoint.h>
 #include <visp3/vs/vpAdaptiveGain.h>

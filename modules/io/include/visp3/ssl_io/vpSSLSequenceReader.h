@@ -13,12 +13,13 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
-#include <visp3/ssl/vpSSLSequenceInfo.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
+#include <visp3/ssl_io/vpSSLSequenceInfo.h>
 
 /*!
   \defgroup group_ssl_io Files
-  Library visp_ssl_io: recorded sequences read and written (vpSSLSequenceReader, vpSSLSequenceWriter), camera
+  Library visp_ssl_io, headers <tt>\<visp3/ssl_io/...\></tt> (CMake: <tt>target_link_libraries(app
+  visp_ssl_io)</tt>): recorded sequences read and written (vpSSLSequenceReader, vpSSLSequenceWriter), camera
   files (vpSSLCameraFile), odometry tracks (vpSSLOdometryTrack) and image files read with their size checked
   before decoding (vpSSLImageIo). The bounds it checks are visp_ssl's (vpSSLInputLimits). See
   doc/sequence-format.md.

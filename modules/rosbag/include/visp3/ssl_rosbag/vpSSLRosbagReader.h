@@ -14,8 +14,8 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpRGBa.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLOdometryTrack.h>
-#include <visp3/ssl/vpSSLSequenceFrame.h>
+#include <visp3/ssl_io/vpSSLOdometryTrack.h>
+#include <visp3/ssl_io/vpSSLSequenceFrame.h>
 
 /*!
   \struct vpSSLRosbagTopic

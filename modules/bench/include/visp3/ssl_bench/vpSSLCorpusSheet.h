@@ -5,8 +5,8 @@
 #ifndef VP_SSL_CORPUS_SHEET_H
 #define VP_SSL_CORPUS_SHEET_H
 
-#include <visp3/ssl/vpSSLCorpusTexture.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_bench/vpSSLCorpusTexture.h>
 
 /*!
   \class vpSSLCorpusSheet

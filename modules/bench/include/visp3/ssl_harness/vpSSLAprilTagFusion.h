@@ -8,8 +8,8 @@
 #include <visp3/core/vpCameraParameters.h>
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/ssl/vpSSLParticleFilter.h>
-#include <visp3/ssl/vpSSLServoInput.h>
 #include <visp3/ssl/vpSSLTarget.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
 
 /*!
   \class vpSSLAprilTagFusion

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <visp3/ssl/vpSSLCorpusView.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl_bench/vpSSLCorpusView.h>
 
 /*!
   \struct vpSSLCorpusLandmarkResult

@@ -11,8 +11,8 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/robot/vpRobot.h>
 #include <visp3/ssl/vpSSLConfig.h>
-#include <visp3/ssl/vpSSLServoInput.h>
-#include <visp3/ssl/vpSSLServoLaw.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
+#include <visp3/ssl_servo/vpSSLServoLaw.h>
 
 /*!
   \enum vpSSLHomingState

@@ -15,18 +15,18 @@
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpPoint.h>
 #include <visp3/core/vpTranslationVector.h>
-#include <visp3/ssl/vpSSLAprilTagBaseline.h>
-#include <visp3/ssl/vpSSLAprilTagFusion.h>
-#include <visp3/ssl/vpSSLAprilTagSheet.h>
-#include <visp3/ssl/vpSSLAuvSimulator.h>
 #include <visp3/ssl/vpSSLDetector.h>
-#include <visp3/ssl/vpSSLHomingBehaviour.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
-#include <visp3/ssl/vpSSLRenderer.h>
-#include <visp3/ssl/vpSSLServoInput.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl/vpSSLTracker.h>
-#include <visp3/ssl/vpSSLWaterModel.h>
+#include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
+#include <visp3/ssl_harness/vpSSLAprilTagFusion.h>
+#include <visp3/ssl_servo/vpSSLHomingBehaviour.h>
+#include <visp3/ssl_servo/vpSSLServoInput.h>
+#include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
+#include <visp3/ssl_sim/vpSSLAuvSimulator.h>
+#include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 /*!
   \class vpSSLClosedLoop
