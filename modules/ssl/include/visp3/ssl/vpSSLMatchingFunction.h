@@ -88,14 +88,6 @@ public:
   void compute(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M) const;
 
   /*!
-    As compute(I, rois, M), but only the pixels inside the rectangles are written: the others keep their values
-    (if M has not the image's size, it is resized and set to 0 first). For a caller that keeps M zero outside its
-    regions itself, by clearing only the regions it wrote last (vpSSLDetector's tracking frames), rather than the
-    whole map at every call.
-  */
-  void computeInside(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M) const;
-
-  /*!
     Matching function in one direction at one pixel for any window length (Eq. 3, unnormalised sum),
     used by the apparent-radius sweep (Eq. 7).
     \return false (and leaves \e value untouched) when the window leaves the image.
@@ -124,6 +116,16 @@ public:
   int offsetP(unsigned int xi) const;
 
 private:
+  // The detection pipeline behind vpSSLDetector (modules/ssl/src/vpSSLDetectionPipeline.h) is the one caller of
+  // computeInside(): the map it leaves outside the rectangles is only right for a caller that clears it itself.
+  friend class vpSSLDetectionPipeline;
+
+  // As compute(I, rois, M), but only the pixels inside the rectangles are written: the others keep their values
+  // (if M has not the image's size, it is resized and set to 0 first). For a caller that keeps M zero outside its
+  // regions itself, by clearing only the regions it wrote last (vpSSLDetector's tracking frames), rather than the
+  // whole map at every call.
+  void computeInside(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M) const;
+
   void computeRegions(const vpImage<unsigned char> &I, const std::vector<vpRect> &rois, vpImage<int> &M,
                       bool clearOutside) const;
 
