@@ -79,6 +79,9 @@ Options:
                        (setRangeIntegralGain(0.05)), so that a current neither carries the vehicle off while it
                        searches nor holds it short of the stand-off (default off: the behaviour of
                        tutorial-ssl-servo).
+  --dock-in-transit    The behaviour gets the odometry, estimates the current from it and, when the current
+                       across the line of sight reaches 0.1 m/s, docks without holding the stand-off, crabbing
+                       into the current (vpSSLHomingBehaviour::setDockInTransit(); default off).
   --threads T          Runs in parallel (default 2); the results do not depend on it.
   --traces             Also write each run's steps as DIR/run-<i>-<method>.csv (tutorial-ssl-servo's columns).
   --output-dir DIR     Where runs.csv and summary.md go (default ".", created if needed).
@@ -108,6 +111,7 @@ struct Options : ssltut::ClosedLoopOutputOptions
   double maxCurrent = 0.1;
   double dockHold = 10., dockRange = 0.5, dockAngle = 15.;
   bool stationKeeping = false;
+  bool dockInTransit = false;
   long threads = 2;
   bool traces = false;
 };
@@ -188,6 +192,8 @@ bool parse(int argc, char **argv, Options &o)
       o.traces = true;
     } else if (a == "--station-keeping") {
       o.stationKeeping = true;
+    } else if (a == "--dock-in-transit") {
+      o.dockInTransit = true;
     } else if (a == "--threads") {
       o.threads = ssltut::parseThreads(a, value(), false, 64);
     } else if (o.parseOutputOption(a, value, 10000)) {
@@ -287,6 +293,7 @@ vpSSLClosedLoop::Scene makeScene(const Draw &d, const Options &opt)
   s.autoDockAngle = opt.dockAngle;
   s.stationKeeping = opt.stationKeeping;
   s.rangeIntegralGain = opt.stationKeeping ? 0.05 : 0.;
+  s.dockInTransit = opt.dockInTransit;
   s.wMoHome = vpSSLScenario("approach").getTargetHome();
   // The camera d.distance south of the target centre (the target faces south), then the vehicle origin behind it.
   const vpTranslationVector tHome = s.wMoHome.getTranslationVector();
@@ -549,7 +556,8 @@ static int run(int argc, char **argv)
      << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
      << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
      << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
-     << (opt.stationKeeping ? ", station keeping on the odometry" : "") << "\n\n";
+     << (opt.stationKeeping ? ", station keeping on the odometry" : "")
+     << (opt.dockInTransit ? ", docking in transit across a current" : "") << "\n\n";
   md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
         "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
         "lost-target events |";

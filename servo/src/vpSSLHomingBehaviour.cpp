@@ -22,11 +22,14 @@ vpSSLHomingBehaviour::vpSSLHomingBehaviour()
       m_searchDepthGain(0.5), m_alignTolerance(vpMath::rad(5.)), m_lostTimeout(3.), m_minPoints(1), m_autoDockHold(-1.),
       m_autoDockRangeTolerance(0.1), m_autoDockAngleTolerance(vpMath::rad(5.)), m_alignTimeout(5.),
       m_blindDockRange(0.6), m_blindDockSpeed(0.1), m_searchHoldGain(0.5), m_searchHoldSpeed(0.3),
-      m_rangeIntegralGain(0.), m_state(SSL_HOMING_SEARCH), m_dockRequested(false), m_started(false), m_time(0.),
-      m_stateStart(0.), m_lastSeen(-kInf), m_holdStart(kNaN), m_seen(false), m_lastCollision(false), m_nbCollisions(0),
-      m_lastRange(kInf), m_range(kNaN), m_lastSurge(0.), m_searchDepth(kNaN),
+      m_rangeIntegralGain(0.), m_transitEnabled(false), m_transitCrossCurrent(0.1), m_transitMaxCrab(vpMath::rad(20.)),
+      m_state(SSL_HOMING_SEARCH), m_dockRequested(false), m_started(false), m_time(0.), m_stateStart(0.),
+      m_lastSeen(-kInf), m_holdStart(kNaN), m_seen(false), m_lastCollision(false), m_nbCollisions(0), m_lastRange(kInf),
+      m_range(kNaN), m_lastSurge(0.), m_searchDepth(kNaN),
       m_hasOdometry(false), m_position{kNaN, kNaN}, m_heading{1., 0.}, m_anchor{kNaN, kNaN}, m_targetCentre{kNaN, kNaN},
-      m_targetNormal{kNaN, kNaN}, m_rangeIntegral(0.), m_previousTime(0.), m_velocity(6, 0.), m_cameraVelocity(6, 0.)
+      m_targetNormal{kNaN, kNaN}, m_rangeIntegral(0.), m_previousTime(0.), m_starboard{0., 1.},
+      m_hadOdometry(false), m_current{0., 0.}, m_currentWeight(0.), m_waterVelocity{0., 0.}, m_crabAngle(0.),
+      m_velocity(6, 0.), m_cameraVelocity(6, 0.)
 {
   m_law.setStandOff(m_standOff);
 }
@@ -158,6 +161,31 @@ void vpSSLHomingBehaviour::setRangeIntegralGain(double gain)
   m_rangeIntegralGain = gain;
 }
 
+void vpSSLHomingBehaviour::setDockInTransit(bool enable, double crossCurrent, double maxCrab)
+{
+  if (!std::isfinite(crossCurrent) || crossCurrent < 0. || !std::isfinite(maxCrab) || !(maxCrab > 0.) ||
+      maxCrab >= M_PI / 2.) {
+    throw vpException(vpException::badValue,
+                      "vpSSLHomingBehaviour::setDockInTransit: crossCurrent %g, maxCrab %g: need a finite "
+                      "crossCurrent >= 0 and maxCrab in (0, pi/2) rad",
+                      crossCurrent, maxCrab);
+  }
+  m_transitEnabled = enable;
+  m_transitCrossCurrent = crossCurrent;
+  m_transitMaxCrab = maxCrab;
+}
+
+bool vpSSLHomingBehaviour::getCurrentEstimate(double &cx, double &cy) const
+{
+  if (!(m_currentWeight > 0.)) {
+    cx = cy = kNaN;
+    return false;
+  }
+  cx = m_current[0] / m_currentWeight;
+  cy = m_current[1] / m_currentWeight;
+  return true;
+}
+
 std::string vpSSLHomingBehaviour::getStateName(vpSSLHomingState state)
 {
   switch (state) {
@@ -205,6 +233,13 @@ void vpSSLHomingBehaviour::reset()
   m_targetNormal[0] = m_targetNormal[1] = kNaN;
   m_rangeIntegral = 0.;
   m_previousTime = 0.;
+  m_starboard[0] = 0.;
+  m_starboard[1] = 1.;
+  m_hadOdometry = false;
+  m_current[0] = m_current[1] = 0.;
+  m_currentWeight = 0.;
+  m_waterVelocity[0] = m_waterVelocity[1] = 0.;
+  m_crabAngle = 0.;
   m_velocity = vpColVector(6, 0.);
   m_cameraVelocity = vpColVector(6, 0.);
 }
@@ -279,6 +314,143 @@ vpColVector vpSSLHomingBehaviour::blindDockCommand() const
   return v;
 }
 
+namespace {
+// Time constant of the current estimate (s): long against the autopilot's half-second lag, so that the
+// command's transients average out, short against a mission.
+const double kCurrentTimeConstant = 5.;
+// The simulated autopilot's response lag (s), modelled to first order (doc/servo-simulation.md).
+const double kAutopilotLag = 0.5;
+// The estimate is used once it has averaged two time constants of odometry.
+const double kCurrentSettled = 1. - std::exp(-2.);
+} // namespace
+
+void vpSSLHomingBehaviour::updateCurrentEstimate(const vpHomogeneousMatrix &oMv)
+{
+  const double dt = m_time - m_previousTime;
+  if (dt > 0.) {
+    // The velocity through the water over the interval: the autopilot's first-order response to the previous
+    // command, averaged over the interval and rotated into the odometry frame with the heading halfway through
+    // it. What the odometry moved beyond it is the current.
+    const double decay = std::exp(-dt / kAutopilotLag);
+    const double mean = kAutopilotLag / dt * (1. - decay);
+    const double command[2] = {m_velocity[SSL_AXIS_SURGE], m_velocity[SSL_AXIS_SWAY]};
+    double water[2];
+    for (int i = 0; i < 2; ++i) {
+      water[i] = command[i] + (m_waterVelocity[i] - command[i]) * mean;
+      m_waterVelocity[i] = command[i] + (m_waterVelocity[i] - command[i]) * decay;
+    }
+    double forward[2] = {m_heading[0] + oMv[0][0], m_heading[1] + oMv[1][0]};
+    const double norm = std::sqrt(forward[0] * forward[0] + forward[1] * forward[1]);
+    if (!(norm > 1e-6)) {
+      return; // turned half a turn in one step: no heading for the interval
+    }
+    forward[0] /= norm;
+    forward[1] /= norm;
+    const double sign = m_starboard[0] * -m_heading[1] + m_starboard[1] * m_heading[0] >= 0. ? 1. : -1.;
+    const double side[2] = {-sign * forward[1], sign * forward[0]};
+    double sample[2];
+    for (int i = 0; i < 2; ++i) {
+      const double ground = (oMv[i][3] - m_position[i]) / dt;
+      sample[i] = ground - (water[0] * forward[i] + water[1] * side[i]);
+    }
+    if (std::isfinite(sample[0]) && std::isfinite(sample[1])) {
+      const double alpha = dt / (kCurrentTimeConstant + dt);
+      for (int i = 0; i < 2; ++i) {
+        m_current[i] += alpha * (sample[i] - m_current[i]);
+      }
+      m_currentWeight += alpha * (1. - m_currentWeight);
+    }
+  }
+}
+
+bool vpSSLHomingBehaviour::lineOfSightCurrent(bool usable, double xc, double &across, double &along) const
+{
+  across = along = 0.;
+  double cx, cy;
+  if (!usable || !m_hasOdometry || m_currentWeight < kCurrentSettled || !getCurrentEstimate(cx, cy)) {
+    return false;
+  }
+  // The line of sight is the heading turned towards starboard by the target's bearing in the image (camera x
+  // along the vehicle's y). along: the current towards the target; across: towards the line's starboard side.
+  const double bearing = std::atan(xc);
+  const double c = std::cos(bearing), s = std::sin(bearing);
+  const double los[2] = {c * m_heading[0] + s * m_starboard[0], c * m_heading[1] + s * m_starboard[1]};
+  const double side[2] = {-s * m_heading[0] + c * m_starboard[0], -s * m_heading[1] + c * m_starboard[1]};
+  along = cx * los[0] + cy * los[1];
+  across = cx * side[0] + cy * side[1];
+  return true;
+}
+
+vpColVector vpSSLHomingBehaviour::transitDockCommand(const vpSSLServoInput &input, double range, double across,
+                                                     double along)
+{
+  // The docking law's surge is the closing speed it asks for over the ground; the velocity through the water that
+  // gives it is that closing speed along the line of sight minus the current. Its direction is the crab angle, at
+  // most setDockInTransit()'s: beyond, the surge grows so that the current across the line is still cancelled.
+  m_law.setStandOff(0.);
+  const vpColVector straight = m_law.computeControlLaw(input);
+  if (m_law.getStatus() != SSL_SERVO_OK || !m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
+    return straight;
+  }
+  const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
+  const double closing = std::max(straight[SSL_AXIS_SURGE], m_blindDockSpeed);
+  const double forward = closing - along;
+  double surge = std::sqrt(forward * forward + across * across);
+  m_crabAngle = std::atan2(across, forward);
+  if (std::fabs(m_crabAngle) > m_transitMaxCrab) {
+    m_crabAngle = m_crabAngle > 0. ? m_transitMaxCrab : -m_transitMaxCrab;
+    surge = std::fabs(across) / std::sin(m_transitMaxCrab);
+  }
+  // A virtual camera c' yawed by the crab angle towards the target (camera y is down: +angle turns the optical
+  // axis towards +x): the law centres the target in c', so the real nose points upstream of it by that angle.
+  const vpHomogeneousMatrix cMcp(vpTranslationVector(0., 0., 0.), vpRotationMatrix(vpRxyzVector(0., m_crabAngle, 0.)));
+  const vpHomogeneousMatrix cpMc = cMcp.inverse();
+  vpSSLServoInput virtualInput = input;
+  for (vpSSLServoPoint &p : virtualInput.points) {
+    const double X = p.x * p.Z, Y = p.y * p.Z;
+    const double Xp = cpMc[0][0] * X + cpMc[0][1] * Y + cpMc[0][2] * p.Z;
+    const double Yp = cpMc[1][0] * X + cpMc[1][1] * Y + cpMc[1][2] * p.Z;
+    const double Zp = cpMc[2][0] * X + cpMc[2][1] * Y + cpMc[2][2] * p.Z;
+    p.x = Xp / Zp;
+    p.y = Yp / Zp;
+    p.Z = Zp;
+  }
+  if (virtualInput.hasPose) {
+    virtualInput.cMo = cpMc * input.cMo;
+  }
+  // The law steers; the surge is the feed-forward's. With its own surge limit the law's surge from afar would
+  // saturate and scale the turn down with it, while the current carries the target out of view.
+  const vpHomogeneousMatrix vMc = m_law.getCameraToVehicle();
+  const vpColVector limits = m_law.getVelocityLimits();
+  vpColVector steerLimits = limits;
+  steerLimits[SSL_AXIS_SURGE] = 1e3;
+  m_law.setCameraToVehicle(vMc * cMcp);
+  m_law.setVelocityLimits(steerLimits);
+  vpColVector v = m_law.computeControlLaw(virtualInput);
+  m_law.setCameraToVehicle(vMc);
+  m_law.setVelocityLimits(limits);
+  if (m_law.getStatus() == SSL_SERVO_OK) {
+    // The feed-forward fades in as the law turns the nose to the crab angle: surging hard while the nose points
+    // elsewhere (the end of a search turn) would drive the vehicle off the line of sight.
+    double xv, yv, Zv;
+    const double error =
+        vpSSLServoLaw::getTargetCentre(virtualInput, xv, yv, Zv) ? std::atan(std::sqrt(xv * xv + yv * yv)) : kInf;
+    const double weight = std::max(0., 1. - error / m_transitMaxCrab);
+    v[SSL_AXIS_SURGE] = std::min(weight * surge, vmax);
+    // While the current carries the vehicle across, the line of sight turns at the vehicle's velocity across it
+    // over the range: a proportional law lags behind it by the error that gives that rate, the crab angle is never
+    // reached and the surge not faded in. Turning with the line of sight removes that lag.
+    double xc, yc, Zc;
+    if (m_law.getAxisEnabled(SSL_AXIS_YAW) && vpSSLServoLaw::getTargetCentre(input, xc, yc, Zc) && Zc > 0.) {
+      const double bearing = std::atan(xc);
+      const double acrossGround = across - m_waterVelocity[0] * std::sin(bearing);
+      const double ymax = m_law.getVelocityLimits()[SSL_AXIS_YAW];
+      v[SSL_AXIS_YAW] = clamp(v[SSL_AXIS_YAW] - acrossGround / Zc, ymax);
+    }
+  }
+  return v;
+}
+
 vpColVector vpSSLHomingBehaviour::update(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision)
 {
   return step(t, input, vehicleDepth, collision, nullptr);
@@ -321,15 +493,26 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
   // The vehicle's x axis projected on the horizontal plane gives the heading; a vehicle pointing straight up or
   // down has none, and that step counts as without odometry.
   m_hasOdometry = false;
+  m_crabAngle = 0.;
+  const bool hadOdometry = m_hadOdometry;
+  m_hadOdometry = false;
   if (oMv != nullptr) {
     const double hx = (*oMv)[0][0], hy = (*oMv)[1][0];
     const double norm = std::sqrt(hx * hx + hy * hy);
     if (std::isfinite(norm) && norm > 1e-6 && std::isfinite((*oMv)[0][3]) && std::isfinite((*oMv)[1][3])) {
       m_hasOdometry = true;
+      if (hadOdometry) {
+        updateCurrentEstimate(*oMv); // before the position and heading become this step's
+      }
+      m_hadOdometry = true;
       m_position[0] = (*oMv)[0][3];
       m_position[1] = (*oMv)[1][3];
       m_heading[0] = hx / norm;
       m_heading[1] = hy / norm;
+      // Starboard: the horizontal normal of the heading on the side of the vehicle's y axis (z down: x cross y).
+      const double side = (*oMv)[0][1] * -m_heading[1] + (*oMv)[1][1] * m_heading[0];
+      m_starboard[0] = side >= 0. ? -m_heading[1] : m_heading[1];
+      m_starboard[1] = side >= 0. ? m_heading[0] : -m_heading[0];
       if (m_seen && input.hasPose) {
         // The target's centre and the horizontal direction out of its face (object Z points into the sheet).
         const vpHomogeneousMatrix oMt = (*oMv) * m_law.getCameraToVehicle() * input.cMo;
@@ -351,6 +534,13 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
   const bool lostTooLong = !m_seen && (m_time - m_lastSeen > m_lostTimeout);
   // Angle between the optical axis and the ray to the target centre.
   const double centreAngle = usable ? std::atan(std::sqrt(xc * xc + yc * yc)) : kInf;
+  double across = 0., along = 0.;
+  const bool currentKnown = m_transitEnabled && lineOfSightCurrent(usable, xc, across, along);
+  const bool transit = currentKnown && m_seen && std::fabs(across) >= m_transitCrossCurrent;
+  if (transit && (m_state == SSL_HOMING_ALIGN || m_state == SSL_HOMING_HOME)) {
+    // Holding the stand-off is not possible across this current: dock without stopping.
+    m_dockRequested = true;
+  }
 
   // Transitions; a chain (SEARCH -> ALIGN -> HOME) may happen in one step, the guard bounds it.
   for (int guard = 0; guard < 5; ++guard) {
@@ -364,7 +554,7 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
     case SSL_HOMING_ALIGN:
       if (lostTooLong) {
         setState(SSL_HOMING_SEARCH);
-      } else if (m_seen && (centreAngle < m_alignTolerance || getTimeInState() >= m_alignTimeout)) {
+      } else if (m_seen && (centreAngle < m_alignTolerance || getTimeInState() >= m_alignTimeout || transit)) {
         // After the timeout the full law takes over the centring: a cross current can hold the target off-centre
         // beyond the tolerance while the vehicle drifts away with the range uncontrolled.
         setState(m_dockRequested ? SSL_HOMING_DOCK : SSL_HOMING_HOME);
@@ -442,8 +632,9 @@ vpColVector vpSSLHomingBehaviour::step(double t, const vpSSLServoInput &input, d
   case SSL_HOMING_DOCK:
     if (usable) {
       m_law.setStandOff(0.);
-      v = m_law.computeControlLaw(input);
-      if (m_law.getStatus() == SSL_SERVO_OK && m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
+      v = currentKnown ? transitDockCommand(input, Zc, across, along) : m_law.computeControlLaw(input);
+      // The current's feed-forward already balances what HOME's integral did.
+      if (!currentKnown && m_law.getStatus() == SSL_SERVO_OK && m_law.getAxisEnabled(SSL_AXIS_SURGE)) {
         const double vmax = m_law.getVelocityLimits()[SSL_AXIS_SURGE];
         v[SSL_AXIS_SURGE] = clamp(v[SSL_AXIS_SURGE] + m_rangeIntegralGain * m_rangeIntegral, vmax);
       }

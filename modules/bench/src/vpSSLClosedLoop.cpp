@@ -169,6 +169,7 @@ vpSSLClosedLoop::vpSSLClosedLoop(const Scene &scene, Method method, const vpCame
   // there the approach is blind, holding the last surge.
   m_homing.setBlindDock(scene.blindDockRange, scene.blindDockSpeed);
   m_homing.setRangeIntegralGain(scene.rangeIntegralGain);
+  m_homing.setDockInTransit(scene.dockInTransit);
 
   m_renderer.setSupersampling(supersampling);
   if (isAprilTag(method)) {
@@ -241,7 +242,7 @@ vpSSLClosedLoop::Row vpSSLClosedLoop::step(int k)
   }
 
   const vpColVector command =
-      m_scene.stationKeeping
+      m_scene.stationKeeping || m_scene.dockInTransit
           ? m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision(), m_auv.getOdometry())
           : m_homing.update(t, input, m_auv.getDepthMeasurement(), m_auv.getCollision());
   Row r;

@@ -146,6 +146,43 @@ public:
     \exception vpException if \e gain is not finite or is < 0.
   */
   void setRangeIntegralGain(double gain);
+  /*!
+    Docking in transit across a current (needs update() with the odometry). An under-actuated vehicle cannot
+    hold a stand-off in a cross current stronger than its sway thruster: the law keeps the target centred by
+    yawing and the current carries the vehicle round the target until the sheet is seen edge-on and lost. It
+    can still reach the board if it does not stop: heading upstream of the line of sight by the crab angle
+    asin(c / u) makes the ground track a straight line to the target for a cross current c and a surge u.
+
+    When enabled, the current is estimated from the odometry against the command (getCurrentEstimate()). Once
+    the estimate has settled (10 s of odometry) and its component across the line of sight reaches
+    \e crossCurrent (m/s) while the target is seen, ALIGN and HOME request docking at once instead of holding
+    the stand-off. In DOCK, with a settled estimate, the law servoes the image of a virtual camera yawed by the
+    crab angle, so that the target is held that far off the optical axis on the upstream side, with the law's
+    surge limit lifted so that a saturated surge does not slow the turn; the surge is the docking law's closing
+    speed along the line of sight minus the current (its direction is the crab angle, at most \e maxCrab; beyond,
+    the surge grows to c / sin(\e maxCrab), bounded by the law's surge limit), faded in as the nose turns to
+    the crab angle. Where the physics stops: across a current above the surge limit times sin(\e maxCrab)
+    (0.17 m/s with the defaults) the vehicle drifts by the rest during the approach; the faster approach also
+    means a harder contact. The 0.1 m/s default: below it the stand-off hold docks (doc/servo-simulation.md,
+    "Docking in transit").
+    Default: disabled; 0.1 m/s, 20 deg (the 640 x 480 camera's half field of view is 30 deg).
+    \exception vpException if \e crossCurrent is not finite or < 0, or \e maxCrab is not in (0, pi/2).
+  */
+  void setDockInTransit(bool enable, double crossCurrent = 0.1, double maxCrab = 20. * M_PI / 180.);
+  //! Whether docking in transit is enabled (setDockInTransit()).
+  bool getDockInTransit() const { return m_transitEnabled; }
+  /*!
+    The water current estimated from the odometry: the velocity over the ground (odometry positions of
+    successive update() calls) minus the velocity through the water, modelled as the autopilot's first-order
+    response (0.5 s) to the commands, low-pass filtered with a 5 s time constant. Its errors are the odometry's
+    (a 5 % scale error is 0.025 m/s at 0.5 m/s) and the vehicle's departures from the commands (sideslip in a
+    turn, thrust saturation).
+    \param cx, cy : current along the odometry frame's x and y axes (m/s).
+    \return false (cx, cy NaN) before two steps with odometry.
+  */
+  bool getCurrentEstimate(double &cx, double &cy) const;
+  //! Crab angle the last DOCK step servoed (rad, positive with the target starboard of the nose; 0 otherwise).
+  double getCrabAngle() const { return m_crabAngle; }
   //! Requests docking: HOME -> DOCK at the next update() (ALIGN -> DOCK directly once aligned).
   void startDocking() { m_dockRequested = true; }
   //! Cancels a docking request; DOCK -> HOME at the next update().
@@ -208,6 +245,9 @@ private:
   vpColVector step(double t, const vpSSLServoInput &input, double vehicleDepth, bool collision,
                    const vpHomogeneousMatrix *oMv);
   vpColVector blindDockCommand() const;
+  void updateCurrentEstimate(const vpHomogeneousMatrix &oMv);
+  bool lineOfSightCurrent(bool usable, double xc, double &across, double &along) const;
+  vpColVector transitDockCommand(const vpSSLServoInput &input, double range, double across, double along);
 
   vpSSLServoLaw m_law;
   double m_standOff;
@@ -228,6 +268,9 @@ private:
   double m_searchHoldGain;
   double m_searchHoldSpeed;
   double m_rangeIntegralGain;
+  bool m_transitEnabled;
+  double m_transitCrossCurrent;
+  double m_transitMaxCrab;
 
   vpSSLHomingState m_state;
   bool m_dockRequested;
@@ -243,14 +286,20 @@ private:
   double m_range;
   double m_lastSurge;
   double m_searchDepth;
-  bool m_hasOdometry;       // odometry at this step
-  double m_position[2];     // horizontal odometry position at this step
-  double m_heading[2];      // cos, sin of the vehicle's x axis in the odometry frame
-  double m_anchor[2];       // where SEARCH holds the vehicle (NaN: no anchor yet)
-  double m_targetCentre[2]; // horizontal odometry position of the target when last seen with a pose (NaN: never)
-  double m_targetNormal[2]; // horizontal unit vector out of the target's face
-  double m_rangeIntegral;   // integral of (range - stand-off) over the time in HOME (m s)
-  double m_previousTime;    // time of the previous step
+  bool m_hasOdometry;        // odometry at this step
+  double m_position[2];      // horizontal odometry position at this step
+  double m_heading[2];       // cos, sin of the vehicle's x axis in the odometry frame
+  double m_anchor[2];        // where SEARCH holds the vehicle (NaN: no anchor yet)
+  double m_targetCentre[2];  // horizontal odometry position of the target when last seen with a pose (NaN: never)
+  double m_targetNormal[2];  // horizontal unit vector out of the target's face
+  double m_rangeIntegral;    // integral of (range - stand-off) over the time in HOME (m s)
+  double m_previousTime;     // time of the previous step
+  double m_starboard[2];     // the vehicle's y axis in the odometry frame (horizontal, unit)
+  bool m_hadOdometry;        // odometry at the previous step (m_position is then its position)
+  double m_current[2];       // low-pass sum of (ground - commanded) velocity, divided by m_currentWeight when read
+  double m_currentWeight;    // 1 - prod(1 - alpha): corrects the filter's start from 0
+  double m_waterVelocity[2]; // modelled surge and sway through the water (m/s)
+  double m_crabAngle;
   vpColVector m_velocity;
   vpColVector m_cameraVelocity;
 };

@@ -73,9 +73,12 @@ public:
     //! Give the behaviour the odometry (its SEARCH then holds its ground, vpSSLHomingBehaviour::setSearchHold()).
     bool stationKeeping = false;
     double rangeIntegralGain = 0.; //!< See vpSSLHomingBehaviour::setRangeIntegralGain().
-    double timeStep = 0.2;         //!< Control period (s): vision at 5 Hz, dynamics sub-stepped inside.
-    std::string scenario;          //!< tutorial-ssl-servo scenario whose events apply (stepEvents()), "" none.
-    double duration = 0.;          //!< Scenario duration (s), for the event times.
+    //! Dock in transit across a current (vpSSLHomingBehaviour::setDockInTransit(), defaults); gives the behaviour
+    //! the odometry.
+    bool dockInTransit = false;
+    double timeStep = 0.2; //!< Control period (s): vision at 5 Hz, dynamics sub-stepped inside.
+    std::string scenario;  //!< tutorial-ssl-servo scenario whose events apply (stepEvents()), "" none.
+    double duration = 0.;  //!< Scenario duration (s), for the event times.
   };
 
   //! One logged control step.
