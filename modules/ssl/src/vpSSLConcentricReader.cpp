@@ -18,6 +18,12 @@ const double kFirstRadius = 6.;
 // Side of the grid of gradient samples over the disc (points): fine once the rings lock the fit, coarse before.
 const double kFineGrid = 32.;
 const double kCoarseGrid = 16.;
+// The same on the box average, whose neighbouring gradients share most of their pixels.
+const double kSmoothGrid = 12.;
+// Smallest disc (px) whose gradients are taken on the 3x3 box average first (read()), and the share of its disc
+// that the fit on the image's own gradients must reach to replace it.
+const double kSmoothRadius = 10.;
+const double kRawDisc = 0.75;
 // Largest disc searched for the rings' concentric structure when none has been seen yet (px): the innermost ring a
 // blur of sigma 4 px leaves readable lies at about 35 px.
 const double kLockRadius = 48.;
@@ -49,6 +55,24 @@ const double kMinSimilarity = 0.5;
 const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
 const int kMinPairs = 2;
+// Sobel gradient of the 3x3 box average at (u, v), 2 px or more inside the image: the 5x5 kernel smooths by
+// [1 3 4 3 1] across the derivative [-1 -1 0 1 1].
+void smoothedGradient(const vpImage<unsigned char> &I, int u, int v, double &gx, double &gy)
+{
+  static const double ks[5] = {1., 3., 4., 3., 1.}, kd[5] = {-1., -1., 0., 1., 1.};
+  gx = 0.;
+  gy = 0.;
+  for (int j = 0; j < 5; ++j) {
+    const unsigned char *r = I[v + j - 2] + u - 2;
+    double along = 0., across = 0.;
+    for (int i = 0; i < 5; ++i) {
+      along += kd[i] * r[i];
+      across += ks[i] * r[i];
+    }
+    gx += ks[j] * along;
+    gy += kd[j] * across;
+  }
+}
 } // namespace
 
 vpSSLConcentricReader::vpSSLConcentricReader()
@@ -76,7 +100,7 @@ void vpSSLConcentricReader::setRadiusRange(double minRadius, double maxRadius)
 }
 
 bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, int iterations, double gridSide,
-                                Fit &f) const
+                                bool smooth, Fit &f) const
 {
   const int W = static_cast<int>(I.getWidth()), H = static_cast<int>(I.getHeight());
   // A few hundred gradients describe the ellipses as well as all of them: the disc is sampled on a grid of about
@@ -86,8 +110,11 @@ bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, 
     const double *q = f.q;
     // Bounding box of the ellipse (x - c)^T Q (x - c) = radius^2 (det Q = 1).
     const double hu = radius * std::sqrt(q[2]), hv = radius * std::sqrt(q[0]);
-    const int u0 = std::max(1, static_cast<int>(std::ceil(f.u - hu))), u1 = std::min(W - 2, static_cast<int>(f.u + hu));
-    const int v0 = std::max(1, static_cast<int>(std::ceil(f.v - hv))), v1 = std::min(H - 2, static_cast<int>(f.v + hv));
+    const int m = smooth ? 2 : 1; // the gradient's half support
+    const int u0 = std::max(m, static_cast<int>(std::ceil(f.u - hu))),
+              u1 = std::min(W - 1 - m, static_cast<int>(f.u + hu));
+    const int v0 = std::max(m, static_cast<int>(std::ceil(f.v - hv))),
+              v1 = std::min(H - 1 - m, static_cast<int>(f.v + hv));
     Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
     Eigen::Matrix2d A = Eigen::Matrix2d::Zero();
     Eigen::Vector2d b = Eigen::Vector2d::Zero();
@@ -102,10 +129,14 @@ bool vpSSLConcentricReader::fit(const vpImage<unsigned char> &I, double radius, 
         if (r2 > r2max || r2 < 1.) {
           continue;
         }
-        // Sobel gradient.
-        const double gx =
-            (above[u + 1] + 2. * row[u + 1] + below[u + 1]) - (above[u - 1] + 2. * row[u - 1] + below[u - 1]);
-        const double gy = (below[u - 1] + 2. * below[u] + below[u + 1]) - (above[u - 1] + 2. * above[u] + above[u + 1]);
+        // Sobel gradient, of the 3x3 box average on larger discs.
+        double gx = 0., gy = 0.;
+        if (smooth) {
+          smoothedGradient(I, u, v, gx, gy);
+        } else {
+          gx = (above[u + 1] + 2. * row[u + 1] + below[u + 1]) - (above[u - 1] + 2. * row[u - 1] + below[u - 1]);
+          gy = (below[u - 1] + 2. * below[u] + below[u + 1]) - (above[u - 1] + 2. * above[u] + above[u + 1]);
+        }
         const double gg = gx * gx + gy * gy;
         if (gg == 0.) {
           continue;
@@ -222,19 +253,15 @@ double vpSSLConcentricReader::band(double tau0, double tau1, int sector) const
   return count > 0 ? sum / count : -1.;
 }
 
-bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+bool vpSSLConcentricReader::grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best,
+                                 double &bestRadius) const
 {
-  m_stage = 1;
-  m_quality = 0.;
-  m_similarity = 0.;
-  if (I.getWidth() < 8 || I.getHeight() < 8) {
-    return false;
-  }
-  // 1. The disc grows while its gradients stay normal to one family of concentric ellipses.
-  Fit current, best;
-  current.u = landmark.u;
-  current.v = landmark.v;
-  double bestRadius = 0., qmax = 0.;
+  // The disc grows from (u, v) while its gradients stay normal to one family of concentric ellipses.
+  Fit current;
+  current.u = u;
+  current.v = v;
+  bestRadius = 0.;
+  double qmax = 0.;
   const double limit = 1.5 * m_maxRadius;
   for (double r = kFirstRadius; r <= limit; r *= kGrowth) {
     if (qmax < kLocked && r > kLockRadius) {
@@ -245,7 +272,8 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     // tell whether they are there (most candidates end here); once locked, the fit is refined to convergence on
     // the fine grid.
     const bool locked = qmax >= kLocked;
-    if (!fit(I, r, locked ? 6 : 3, locked ? kFineGrid : kCoarseGrid, trial)) {
+    const bool average = smooth && r >= kSmoothRadius;
+    if (!fit(I, r, locked ? 6 : 3, locked ? kFineGrid : (average ? kSmoothGrid : kCoarseGrid), average, trial)) {
       if (qmax >= kLocked) {
         break;
       }
@@ -254,7 +282,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     if (qmax >= kLocked && trial.quality < std::max(kMinKept, kKeepShare * qmax)) {
       break;
     }
-    if (std::hypot(trial.u - landmark.u, trial.v - landmark.v) > std::max(4., 0.5 * r)) {
+    if (std::hypot(trial.u - u, trial.v - v) > std::max(4., 0.5 * r)) {
       // Another structure pulled the centre away: once locked, the disc has grown past the landmark; before, a
       // small disc round a blurred centre or a candidate a few pixels off says nothing yet, and a larger one may.
       if (locked) {
@@ -273,10 +301,35 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     }
     qmax = std::max(qmax, trial.quality);
   }
-  if (bestRadius == 0.) {
+  return bestRadius > 0.;
+}
+
+bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+{
+  m_stage = 1;
+  m_quality = 0.;
+  m_similarity = 0.;
+  if (I.getWidth() < 8 || I.getHeight() < 8) {
     return false;
   }
+  // 1. The disc grows while its gradients stay normal to one family of concentric ellipses. On discs of
+  //    kSmoothRadius and more the gradients are first those of the 3x3 box average: averaging takes the noise's
+  //    gradients, in random directions, out of the share of the energy the rings explain, which kept landmarks a
+  //    few times above the noise from locking. Where the image's own gradients lock the fit as well, from that
+  //    centre and to about the same disc, the fit is theirs: the innermost rings, a pixel or two wide, which the
+  //    average greys, pin the image of the landmark's centre under perspective (the outer rings' centres drift).
+  Fit best, raw;
+  double bestRadius = 0., rawRadius = 0.;
+  if (!grow(I, landmark.u, landmark.v, true, best, bestRadius)) {
+    return false;
+  }
+  if (bestRadius >= kSmoothRadius && grow(I, best.u, best.v, false, raw, rawRadius) &&
+      rawRadius >= kRawDisc * bestRadius && rawRadius * kRawDisc <= bestRadius) {
+    best = raw;
+    bestRadius = rawRadius;
+  }
   m_quality = best.quality;
+  const double limit = 1.5 * m_maxRadius;
 
   // 2. The rings' phase from the radial profile of every resolved ring inside the fitted disc. In
   //    tau = log_{1/p}(rho), s_p is a square wave of period 1, black just inside the outer radius tau_R.

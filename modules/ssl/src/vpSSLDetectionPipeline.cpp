@@ -75,8 +75,10 @@ unsigned int coarseWindow(unsigned int w)
 // normalisation, which needs the whole image's table.
 const unsigned int kHistogramStep = 4;
 
-// Candidates per frame that vpSSLConcentricReader may read where the rays give up (readAllAround()).
-const unsigned int kAllAroundBudget = 8;
+// Candidates per frame that vpSSLConcentricReader may read where the rays give up (readAllAround()), and how close
+// (px, in u and in v) a candidate's symmetric centre must be to one read in vain to be skipped.
+const unsigned int kAllAroundBudget = 24;
+const double kSameCentre = 1.5;
 
 // Smallest semi-axis, relative to the window, of a predicted landmark whose region of a tracking frame is matched on
 // the decimated image (vpSSLRegionPlanner::splitByResolution()).
@@ -99,6 +101,7 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
       m_threshold(0.10), m_planner(), m_noRois(), m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
+  m_allAroundTried.reserve(kAllAroundBudget);
   m_radiusEstimator.setP(target.getP());
   m_concentricReader.setP(target.getP());
 }
@@ -202,6 +205,7 @@ void vpSSLDetectionPipeline::detect(const vpImage<unsigned char> &I)
   }
   m_refined.clear();
   m_allAroundLeft = kAllAroundBudget;
+  m_allAroundTried.clear();
   m_times.normalization = elapsedMs(t);
   m_planner.startFrame();
   double reread = 0.; // ring reading of the predicted landmarks, counted with the other ring readings
@@ -479,11 +483,19 @@ bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vp
       insideFound(m_upsample ? 0.5 * (u + 0.5) - 0.5 : u, m_upsample ? 0.5 * (v + 0.5) - 0.5 : v)) {
     return false; // the symmetric centre of a peak on a found landmark's rings is that landmark's
   }
+  // Peaks of both windows, and of a landmark's rings, often settle on the same symmetric centre: one read there
+  // says what the others would.
+  for (const vpImagePoint &p : m_allAroundTried) {
+    if (std::fabs(p.get_u() - u) <= kSameCentre && std::fabs(p.get_v() - v) <= kSameCentre) {
+      return false;
+    }
+  }
   --m_allAroundLeft;
   vpSSLLandmark c = l;
   c.u = u;
   c.v = v;
   if (!m_concentricReader.read(raw, c)) {
+    m_allAroundTried.push_back(vpImagePoint(v, u));
     return false;
   }
   l = c;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <visp3/core/vpImage.h>
+#include <visp3/core/vpImagePoint.h>
 
 #include "vpSSLImageBuffer.h"
 #include <visp3/core/vpRect.h>
@@ -113,7 +114,8 @@ private:
   vpSSLPeakDetector m_peakDetector;
   vpSSLRadiusEstimator m_radiusEstimator;
   vpSSLConcentricReader m_concentricReader;
-  unsigned int m_allAroundLeft = 0; // candidates vpSSLConcentricReader may still read this frame
+  unsigned int m_allAroundLeft = 0;           // candidates vpSSLConcentricReader may still read this frame
+  std::vector<vpImagePoint> m_allAroundTried; // centres it read nothing at this frame
   vpSSLTargetIdentifier m_identifier;
   bool m_normalize;
   bool m_upsample;

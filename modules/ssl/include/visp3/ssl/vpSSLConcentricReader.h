@@ -61,7 +61,8 @@ private:
     double q[3] = {1., 0., 1.}; // (x - c)^T [q0 q1; q1 q2] (x - c), determinant 1
     double quality = 0.;
   };
-  bool fit(const vpImage<unsigned char> &I, double radius, int iterations, double gridSide, Fit &f) const;
+  bool fit(const vpImage<unsigned char> &I, double radius, int iterations, double gridSide, bool smooth, Fit &f) const;
+  bool grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best, double &bestRadius) const;
   bool readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh);
   double band(double tau0, double tau1, int sector) const;
 
