@@ -254,7 +254,7 @@ int run(int argc, char **argv)
   vpImage<vpRGBa> annotated;
   std::unique_ptr<vpDisplay> window_;
   if (display) {
-    // The window is opened on a placeholder now, so that a missing X server is told before any work.
+    // The window is opened on a placeholder first, so that a missing X server is told before any work.
     annotated.resize(480, 640, vpRGBa(0));
     window_ = ssltut::openDisplay(annotated, kProgram, kProgram,
                                   "writing annotated images instead (--output, default ssl-detections)");

@@ -261,7 +261,7 @@ int run(int argc, char **argv)
   vpImage<vpRGBa> annotated;
   std::unique_ptr<vpDisplay> window;
   if (display) {
-    // Opened on a placeholder now, so that a missing X server is told before any work.
+    // Opened on a placeholder first, so that a missing X server is told before any work.
     annotated.resize(480, 640, vpRGBa(0));
     window = ssltut::openDisplay(annotated, kProgram, kProgram,
                                  "writing annotated images instead (--output-dir, default ssl-tracker)");

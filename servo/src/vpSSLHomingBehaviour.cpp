@@ -274,7 +274,7 @@ vpColVector vpSSLHomingBehaviour::searchCommand(double vehicleDepth)
   }
   // Station keeping on the odometry: the error to the anchor in the vehicle frame. While the vehicle turns, the
   // surge pushes back whenever the nose points along the error, so a current slower than the mean of that push
-  // no longer carries the vehicle away from where the target was.
+  // does not carry the vehicle away from where the target was.
   if (m_hasOdometry && m_searchHoldGain > 0. && std::isfinite(m_anchor[0])) {
     double goal[2] = {m_anchor[0], m_anchor[1]};
     if (std::isfinite(m_targetCentre[0])) {

@@ -118,7 +118,7 @@ public:
   void apply(const vpImage<float> &reflectance, const vpImage<float> &range, const vpCameraParameters &cam, double t,
              long seed, vpImage<unsigned char> &I) const;
 
-  //! Preset name, or "custom" once a parameter was changed.
+  //! Preset name, or "custom" once a setter has changed a parameter.
   const std::string &getName() const { return m_name; }
   //! Range (m) at which a black target's contrast against open water falls to 2 %: ln(50) / beta^B_G.
   double getVisibility() const;
