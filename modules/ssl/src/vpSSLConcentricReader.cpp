@@ -314,8 +314,8 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
   }
   // 1. The disc grows while its gradients stay normal to one family of concentric ellipses. On discs of
   //    kSmoothRadius and more the gradients are first those of the 3x3 box average: averaging takes the noise's
-  //    gradients, in random directions, out of the share of the energy the rings explain, which kept landmarks a
-  //    few times above the noise from locking. Where the image's own gradients lock the fit as well, from that
+  //    gradients, in random directions, out of the share of the energy the rings explain, which would keep landmarks
+  //    a few times above the noise from locking. Where the image's own gradients lock the fit as well, from that
   //    centre and to about the same disc, the fit is theirs: the innermost rings, a pixel or two wide, which the
   //    average greys, pin the image of the landmark's centre under perspective (the outer rings' centres drift).
   Fit best, raw;
