@@ -1,6 +1,6 @@
 // Target identification (paper Sec. 3.2): the three landmarks of ssl3-a3 are labelled B, S1, S2 from the
-// model alone; a mirrored target (a reflection in the water surface) is not; one or two visible landmarks
-// fall back to the big one.
+// model alone; a mirrored target (a reflection in the water surface) is not; a lone landmark, or two that cannot
+// be told apart from B, fall back to the big one; S1 and S2 without B keep their size.
 #include <cmath>
 #include <string>
 
@@ -8,6 +8,7 @@
 
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLDetector.h>
+#include <visp3/ssl/vpSSLPoseEstimator.h>
 #include <visp3/ssl_io/vpSSLCameraFile.h>
 #include <visp3/ssl_sim/vpSSLRenderer.h>
 
@@ -190,6 +191,54 @@ TEST(Identification, IdentifierAloneOnHandMadeLandmarks)
   EXPECT_LE(m.nbMatched, 1u);
   EXPECT_TRUE(identifier.identify({}).detection == std::vector<int>(3, -1));
   EXPECT_FALSE(identifier.identify({}).found);
+}
+
+TEST(Identification, SmallPairWithoutTheBigLandmarkKeepsItsSize)
+{
+  // S1 and S2 alone (B out of the image or missed), fronto-parallel at 1000 px/m: they must not be taken for B,
+  // whose radius would put them at twice their range. Upright, S1 is above S2; turned by a half turn the two swap,
+  // and the identifier, which cannot tell, still labels the upper one S1.
+  vpSSLTargetIdentifier identifier;
+  const vpSSLTarget &t = identifier.getTarget();
+  for (double turn : {0., M_PI}) {
+    std::vector<vpSSLLandmark> landmarks;
+    for (int k : {2, 1}) {
+      const double x = t.getLandmark(k).x, y = t.getLandmark(k).y;
+      vpSSLLandmark l;
+      l.u = 320. + 1000. * (std::cos(turn) * x - std::sin(turn) * y);
+      l.v = 240. + 1000. * (std::sin(turn) * x + std::cos(turn) * y);
+      l.radius = l.minorRadius = 1000. * t.getLandmark(k).radius;
+      landmarks.push_back(l);
+    }
+    const vpSSLTargetMatch m = identifier.identify(landmarks);
+    ASSERT_TRUE(m.found) << turn;
+    EXPECT_EQ(m.nbMatched, 2u) << turn;
+    EXPECT_EQ(m.detection[0], -1) << turn;
+    ASSERT_GE(m.detection[1], 0) << turn;
+    ASSERT_GE(m.detection[2], 0) << turn;
+    EXPECT_LT(landmarks[static_cast<size_t>(m.detection[1])].v, landmarks[static_cast<size_t>(m.detection[2])].v)
+        << turn;
+    // The pose estimator then reads the range from a small landmark's radius (Eq. 6): 1 m at 1000 px/m.
+    const std::vector<vpSSLPoseHypothesis> h =
+        vpSSLPoseEstimator(t).estimate(landmarks, m, vpCameraParameters(1000., 1000., 320., 240.));
+    ASSERT_FALSE(h.empty());
+    EXPECT_NEAR(h.front().cMo[2][3], 1., 1e-6) << turn;
+  }
+  // A detection of another size where B belongs (B read at its inner copy, the size of S1) leaves the reading to
+  // the single-landmark case: the biggest detection is B.
+  std::vector<vpSSLLandmark> landmarks;
+  for (int k : {0, 1, 2}) {
+    vpSSLLandmark l;
+    l.u = 320. + 1000. * t.getLandmark(k).x;
+    l.v = 240. + 1000. * t.getLandmark(k).y;
+    l.radius = l.minorRadius = 1000. * t.getLandmark(k).radius * (k == 0 ? 0.5 : 1.);
+    landmarks.push_back(l);
+  }
+  const vpSSLTargetMatch m = identifier.identify(landmarks);
+  EXPECT_EQ(m.nbMatched, 1u);
+  EXPECT_GE(m.detection[0], 0);
+  EXPECT_EQ(m.detection[1], -1);
+  EXPECT_EQ(m.detection[2], -1);
 }
 
 TEST(Identification, BigLandmarkInClearWaterAgainstDarkWater)

@@ -82,7 +82,24 @@ void vpSSLCorpusEvaluator::match(const vpSSLDetector &detector, vpSSLCorpusViewR
   r.targetFound = detector.getTargetMatch().found;
   // B is the target's largest landmark (index 0 for ssl3-a3).
   r.targetCorrect = r.targetFound && !r.results.empty() && r.results[0].labelled;
-  r.falseTarget = r.targetFound && !r.targetCorrect;
+  // A label on a detection that is no landmark of that size misreads the range; two landmarks of one size swapped
+  // (S1 and S2, which two landmarks alone cannot tell apart) do not, and are counted by the labelled column only.
+  const vpSSLTarget &target = detector.getTarget();
+  bool wrongLabel = r.truth.empty() && r.targetFound;
+  for (size_t i = 0; i < r.truth.size() && i < target.size(); ++i) {
+    const vpSSLLandmark *m = detector.getMatchedLandmark(i);
+    if (m == nullptr || r.results[i].labelled) {
+      continue;
+    }
+    bool sameSize = false;
+    for (size_t j = 0; j < r.truth.size() && j < target.size(); ++j) {
+      const vpSSLCorpusLandmarkTruth &t = r.truth[j];
+      sameSize = sameSize || (j != i && target.getLandmark(j).radius == target.getLandmark(i).radius &&
+                              std::hypot(m->u - t.u, m->v - t.v) <= kCentreTolerance * t.a);
+    }
+    wrongLabel = wrongLabel || !sameSize;
+  }
+  r.falseTarget = wrongLabel;
 }
 
 void vpSSLCorpusEvaluator::matchTag(const std::vector<std::vector<vpImagePoint>> &polygons, const std::vector<int> &ids,
@@ -216,7 +233,7 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
   os << "False landmarks per image: " << fmt("%.3f", nPos ? static_cast<double>(falsePos) / nPos : 0.) << " on the "
      << nPos << " target views, " << fmt("%.3f", nNeg ? static_cast<double>(falseNeg) / nNeg : 0.) << " on the " << nNeg
      << " negatives. False targets: " << ftNeg << " of " << nNeg << " negatives, " << ftPos << " of " << nPos
-     << " target views (found with a wrong B). Detector time: "
+     << " target views (a landmark labelled as one of another size, or on no landmark). Detector time: "
      << fmt("%.2f", m_results.empty() ? 0. : ms / m_results.size()) << " ms per image (one thread).\n\n";
 
   // Tables by one variable; the other headline conditions hold (whole in frame, centre not occluded, radius >= 8

@@ -39,6 +39,8 @@ struct IdentifyScratch
   std::vector<int> hypDetection; // target-landmark labels, K per hypothesis
   std::vector<unsigned int> hypCount;
   std::vector<double> hypResidual;
+  std::vector<double> hypRotation; // rotation of the target in the rectified image, in (-pi, pi]
+  std::vector<char> hypBlocked;    // an unmatched landmark's place holds a detection of another size
 };
 
 // One per thread: identify() is const, and const methods of the library are safe to call concurrently.
@@ -93,9 +95,13 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
   std::vector<int> &hypDetection = scratch.hypDetection; // K labels per hypothesis
   std::vector<unsigned int> &hypCount = scratch.hypCount;
   std::vector<double> &hypResidual = scratch.hypResidual;
+  std::vector<double> &hypRotation = scratch.hypRotation;
+  std::vector<char> &hypBlocked = scratch.hypBlocked;
   hypDetection.clear();
   hypCount.clear();
   hypResidual.clear();
+  hypRotation.clear();
+  hypBlocked.clear();
   for (size_t i = 0; i < N; ++i) {
     for (size_t k = 0; k < K; ++k) {
       for (size_t j = 0; j < N; ++j) {
@@ -133,6 +139,7 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
           detection[k] = static_cast<int>(i);
           detection[l] = static_cast<int>(j);
           unsigned int nbMatched = 2;
+          bool blocked = false;
           double residual = std::fabs(dw / dm - 1.);
           for (size_t m = 0; m < K; ++m) {
             if (m == k || m == l) {
@@ -146,15 +153,17 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
             const double expectedRadius = landmarks[i].radius * model[m].radius / model[k].radius;
             int bestJ = -1;
             double bestE = m_distanceTol;
+            bool otherSize = false;
             for (size_t jj = 0; jj < N; ++jj) {
               if (jj == i || jj == j) {
                 continue;
               }
+              const double e = std::hypot(landmarks[jj].u - pu, landmarks[jj].v - pv) / std::max(reach, 1.);
               const double rr = landmarks[jj].radius / expectedRadius;
               if (rr < 1. - m_radiusTol || rr > 1. / (1. - m_radiusTol)) {
+                otherSize = otherSize || e < m_distanceTol;
                 continue;
               }
-              const double e = std::hypot(landmarks[jj].u - pu, landmarks[jj].v - pv) / std::max(reach, 1.);
               if (e < bestE) {
                 bestE = e;
                 bestJ = static_cast<int>(jj);
@@ -164,10 +173,14 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
               detection[m] = bestJ;
               ++nbMatched;
               residual += bestE;
+            } else {
+              blocked = blocked || otherSize;
             }
           }
           hypCount.push_back(nbMatched);
           hypResidual.push_back(residual / (nbMatched - 1));
+          hypRotation.push_back(std::remainder(phi, 2. * M_PI));
+          hypBlocked.push_back(blocked ? 1 : 0);
         }
       }
     }
@@ -208,6 +221,41 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
       result.found = true;
       result.nbMatched = n;
       result.residual = residual;
+      return;
+    }
+    // No hypothesis as good as the best puts the big landmark among the detections: they are smaller landmarks of
+    // the target, and taking the biggest of them for the big one (case 1) would misread the range by the ratio of
+    // their radii. When their labels are ambiguous (two landmarks of equal size, S1 and S2 of ssl3-a3, swap under a
+    // half turn), the target is taken the right way up: the hypothesis with the least rotation in the image. A
+    // detection of another size where a hypothesis puts a landmark it did not match (the big one read at one of
+    // its inner copies, or three equal circles) leaves the reading to case 1, as before.
+    bool bigSeen = false;
+    size_t upright = best;
+    for (size_t h = 0; h < H; ++h) {
+      if (hypCount[h] != bestCount) {
+        continue;
+      }
+      // Any equally complete reading with the big landmark, however good its fit, leaves the doubt.
+      bigSeen = bigSeen || hypDetection[h * K + m_big] >= 0 || hypBlocked[h] != 0;
+      if (hypResidual[h] <= residual + 0.1 && std::fabs(hypRotation[h]) < std::fabs(hypRotation[upright])) {
+        upright = h;
+      }
+    }
+    // A detection bigger than every one the hypothesis labels may be the big landmark that the geometry missed
+    // (its ellipse or a neighbour's read at another size): case 1 takes it for the big one.
+    double labelledMax = 0., seenMax = 0.;
+    for (size_t k = 0; k < K; ++k) {
+      const int d = hypDetection[upright * K + k];
+      labelledMax = d >= 0 ? std::max(labelledMax, landmarks[static_cast<size_t>(d)].radius) : labelledMax;
+    }
+    for (const vpSSLLandmark &l : landmarks) {
+      seenMax = std::max(seenMax, l.radius);
+    }
+    if (!bigSeen && seenMax <= labelledMax) {
+      std::copy(hypDetection.begin() + upright * K, hypDetection.begin() + (upright + 1) * K, agreed.begin());
+      result.found = true;
+      result.nbMatched = bestCount;
+      result.residual = hypResidual[upright];
       return;
     }
     std::fill(agreed.begin(), agreed.end(), -1);

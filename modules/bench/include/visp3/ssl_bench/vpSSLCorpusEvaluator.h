@@ -44,7 +44,7 @@ struct vpSSLCorpusViewResult
   unsigned int falseLandmarks = 0; ///< Detections within 15 % of no true landmark's radius of its centre.
   bool targetFound = false;        ///< getTargetMatch().found.
   bool targetCorrect = false;      ///< Found, and its B within 15 % of B's radius of the true B.
-  bool falseTarget = false;        ///< Found on a negative, or found with a wrong B.
+  bool falseTarget = false;        ///< Found on a negative, or a label on a detection that is no landmark of that size.
   double detectMs = 0.;            ///< Detector time (ms).
   bool tagRun = false;             ///< The AprilTag baseline ran on this view's tag rendering.
   bool tagWholeInFrame = false;    ///< The tag's four corners are in the image.

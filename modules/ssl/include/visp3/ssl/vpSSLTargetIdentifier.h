@@ -17,7 +17,7 @@
 */
 struct VISP_SSL_EXPORT vpSSLTargetMatch
 {
-  bool found = false;         ///< True when at least the biggest landmark was identified.
+  bool found = false;         ///< True when at least one of the target's landmarks was identified.
   unsigned int nbMatched = 0; ///< How many of the target's landmarks were matched (the paper's nbPoints).
   std::vector<int> detection; ///< For each target landmark, the index of its detection, or -1.
   double residual = 0.;       ///< Mean geometric residual of the match (relative to the big radius).
@@ -36,8 +36,13 @@ struct VISP_SSL_EXPORT vpSSLTargetMatch
   the other landmarks must be and of what size, and the hypothesis that explains most detections
   with the smallest residual wins.
 
-  As in the paper, when fewer than three landmarks are identified, a lone big landmark is the
-  target (case 1) and two landmarks that cannot be told apart count as the big one alone (case 2).
+  As in the paper, when fewer than three landmarks are identified, a lone landmark is taken for the
+  big one (case 1) and two landmarks that cannot be told apart count as the big one alone (case 2).
+  Landmarks that match each other but not the big one (S1 and S2 of ssl3-a3 without B) keep their own
+  labels, so that their radii give the right range (Eq. 6); the big one's entry is then -1. Two such
+  landmarks of equal size swap under a half turn of the target, which no image of them alone can tell:
+  they are labelled as if the target were the right way up in the image (the least rotation), and a
+  tracker that knows the orientation relabels them by its prediction.
 
   Threads: identify() is const and safe to call from several threads on one object (its buffers are per
   thread); the setters are not.
@@ -46,6 +51,7 @@ struct VISP_SSL_EXPORT vpSSLTargetMatch
   vpSSLTargetIdentifier identifier(vpSSLTarget::ssl3a3());
   vpSSLTargetMatch match = identifier.identify(landmarks);
   if (match.found && match.detection[0] >= 0) { ... landmarks[match.detection[0]] is B ... }
+  // match.found with match.detection[0] == -1: only S1 and S2 were identified.
   \endcode
 */
 class VISP_SSL_EXPORT vpSSLTargetIdentifier
