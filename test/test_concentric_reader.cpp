@@ -129,3 +129,55 @@ TEST(ConcentricReader, ReadsNothingOnDiscsBullseyesAndChessboards)
     }
   }
 }
+
+TEST(ConcentricReader, SimilaritySeparatesLandmarksFromEqualRings)
+{
+  // vpSSLDetector keeps a landmark whose ring profile correlates with s_p at 0.5 or more (doc/detector.md): B of 25
+  // to 100 px at its true ellipse, face-on to 60 degrees and blurred up to 2 px, reaches it (0.54 at 25 px, 60
+  // degrees and 2 px of blur); a bull's-eye of four to six equal rings read at its outer edge does not.
+  const vpSSLTarget target = vpSSLTarget::ssl3a3();
+  vpSSLCorpusPhotos none;
+  vpSSLConcentricReader r = reader();
+  double lowest = 1.;
+  for (double tilt : {0., 30., 45., 60.}) {
+    for (double depth : {0.8, 1.6, 3.2}) {
+      for (double sigma : {0., 1., 2.}) {
+        vpSSLCorpusView v(target);
+        v.render(view(vpMath::rad(tilt), depth, sigma), &sheet(), none);
+        const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
+        vpSSLLandmark l;
+        l.u = B.u;
+        l.v = B.v;
+        l.radius = B.a;
+        l.minorRadius = B.b;
+        l.theta = B.theta;
+        const double s = r.similarity(v.getImage(), l);
+        lowest = std::min(lowest, s);
+      }
+    }
+  }
+  EXPECT_GE(lowest, 0.5);
+  double highest = -1.;
+  const int N = 201, c = 100;
+  for (int rings : {4, 5, 6}) {
+    for (double outer : {24., 32., 45., 60., 90.}) {
+      const double width = outer / rings;
+      vpImage<unsigned char> I(N, N);
+      for (int v = 0; v < N; ++v) {
+        for (int u = 0; u < N; ++u) {
+          const double rho = std::hypot(u - c, v - c);
+          // The outermost ring dark, as a landmark's.
+          const bool dark = rho < outer && static_cast<int>((outer - rho) / width) % 2 == 0;
+          I[v][u] = dark ? 30 : 220;
+        }
+      }
+      vpSSLLandmark l;
+      l.u = c;
+      l.v = c;
+      l.radius = l.minorRadius = outer;
+      const double s = r.similarity(I, l);
+      highest = std::max(highest, s);
+    }
+  }
+  EXPECT_LT(highest, 0.5);
+}

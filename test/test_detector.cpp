@@ -128,7 +128,7 @@ TEST(Detector, LowContrastWithBrightnessNormalisation)
 TEST(Detector, BrightnessNormalisationIsWhatFindsLowContrast)
 {
   View view = renderLandmark(40., 20., 0.);
-  sslt::setContrast(view.I, 0.1, 128.);
+  sslt::setContrast(view.I, 0.05, 128.);
   vpSSLDetector detector(sslt::singleLandmarkTarget(kLandmarkRadius));
   detector.setBrightnessNormalization(false);
   detector.detect(view.I);

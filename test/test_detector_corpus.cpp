@@ -22,8 +22,8 @@ const unsigned int kMeasuredFoundB = 24;
 // The small-landmark subset of DetectorCorpus.ShortWindowFindsSmallLandmarks, as measured on the current main.
 const unsigned int kSmallViews = 150;
 const unsigned int kSmallEligible = 105;
-const unsigned int kSmallFoundWith = 18;
-const unsigned int kSmallFoundWithout = 10;
+const unsigned int kSmallFoundWith = 19;
+const unsigned int kSmallFoundWithout = 11;
 
 // A clean view: no water loss or veiling light, uniform light, no blur, noise, gamma or JPEG, the sheet on dark
 // water, fine supersampling; the pose is set by the caller.

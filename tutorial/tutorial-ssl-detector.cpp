@@ -55,7 +55,7 @@ Options:
   --small-landmarks   Small-landmark mode: matches on the image upsampled 2x with w = 20, so
                       landmarks down to ~8 px radius are seen (the default sees ~25 px and up;
                       about twice the matching time). Use it for targets at range.
-  --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.10).
+  --threshold T       Score threshold in [0, 1] on the matching value at a peak (default 0.07).
   --no-normalize      Switch brightness normalisation off (on by default, paper Fig. 13).
   --threads N         Worker threads for the matching function, 0 to 256 (default 0: all
                       cores).
@@ -206,7 +206,7 @@ int run(int argc, char **argv)
   ssltut::CameraTargetOptions camera;
   bool json = false, display = false, normalize = true, smallLandmarks = false;
   unsigned int window = 40, threads = 0;
-  double threshold = 0.10;
+  double threshold = 0.07;
   long maxFrames = -1;
   // One option: false for an option this tutorial does not know.
   const auto option = [&](const std::string &a, const auto &value) {

@@ -253,6 +253,70 @@ double vpSSLConcentricReader::band(double tau0, double tau1, int sector) const
   return count > 0 ? sum / count : -1.;
 }
 
+double vpSSLConcentricReader::profileSimilarity(const double *level, double tauA, double tR) const
+{
+  // Normalised correlation, over the bins in [tauA, tR), of the levels with the square wave whose black ring ends
+  // at tR.
+  double mean = 0.;
+  int n = 0;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+    if (tau >= tauA && tau < tR && level[bin] >= 0.) {
+      mean += level[bin];
+      ++n;
+    }
+  }
+  mean /= std::max(1, n);
+  double sf = 0., ff = 0.;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+    if (tau >= tauA && tau < tR && level[bin] >= 0.) {
+      double x = tR - tau;
+      x -= std::floor(x);
+      const double f = level[bin] - mean;
+      sf += x < 0.5 ? -f : f;
+      ff += f * f;
+    }
+  }
+  return n > 0 && ff > 0. ? sf / std::sqrt(ff * n) : 0.;
+}
+
+double vpSSLConcentricReader::similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark)
+{
+  // The landmark's ellipse as a quadratic form of determinant 1: rho = sqrt(a b) on the outer ellipse.
+  const double a = landmark.radius, b = landmark.minorRadius > 0. ? landmark.minorRadius : landmark.radius;
+  if (!(a > 0. && b > 0.) || I.getWidth() < 2 || I.getHeight() < 2) {
+    return 0.;
+  }
+  const double c = std::cos(landmark.theta), s = std::sin(landmark.theta);
+  const double major = b / a, minor = a / b; // Q's eigenvalues along the major and the minor axis
+  Fit f;
+  f.u = landmark.u;
+  f.v = landmark.v;
+  f.q[0] = major * c * c + minor * s * s;
+  f.q[1] = (major - minor) * c * s;
+  f.q[2] = major * s * s + minor * c * c;
+  const double L = m_logStep;
+  const double tR = std::log(std::sqrt(a * b)) / L;
+  const double ringShare = 1. - std::sqrt(m_p);
+  const double tauA = std::log(kMinRingWidth / ringShare) / L;
+  if (!(tR > tauA)) {
+    return 0.;
+  }
+  readProfile(I, f, tauA - 0.5, tR);
+  double level[kMaxBins];
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    double sum = 0.;
+    int count = 0;
+    for (int k = 0; k < kSectors; ++k) {
+      sum += m_sum[bin][k];
+      count += m_count[bin][k];
+    }
+    level[bin] = count > 0 ? sum / count : -1.;
+  }
+  return profileSimilarity(level, tauA, tR);
+}
+
 bool vpSSLConcentricReader::grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best,
                                  double &bestRadius) const
 {
@@ -485,28 +549,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       outer = 0.;
       continue;
     }
-    double mean = 0.;
-    int n = 0;
-    for (int bin = 0; bin < m_nbBins; ++bin) {
-      const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
-      if (tau >= tauA && tau < tR && level[bin] >= 0.) {
-        mean += level[bin];
-        ++n;
-      }
-    }
-    mean /= std::max(1, n);
-    double sf = 0., ff = 0.;
-    for (int bin = 0; bin < m_nbBins; ++bin) {
-      const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
-      if (tau >= tauA && tau < tR && level[bin] >= 0.) {
-        double x = tR - tau;
-        x -= std::floor(x);
-        const double f = level[bin] - mean;
-        sf += x < 0.5 ? -f : f;
-        ff += f * f;
-      }
-    }
-    m_similarity = n > 0 && ff > 0. ? sf / std::sqrt(ff * n) : 0.;
+    m_similarity = profileSimilarity(level, tauA, tR);
     if (m_similarity < kMinSimilarity) {
       outer = 0.;
       continue;

@@ -75,6 +75,9 @@ unsigned int coarseWindow(unsigned int w)
 // normalisation, which needs the whole image's table.
 const unsigned int kHistogramStep = 4;
 
+// Smallest correlation of a landmark's ring profile with the square wave s_p (vpSSLConcentricReader::similarity()):
+// sharp landmarks give 0.8-0.9, 25 px ones blurred by 2 px 0.54 and more, bull's-eyes of equal rings 0.46 and less.
+const double kMinSimilarity = 0.5;
 // Candidates per frame that vpSSLConcentricReader may read where the rays give up (readAllAround()), and how close
 // (px, in u and in v) a candidate's symmetric centre must be to one read in vain to be skipped.
 const unsigned int kAllAroundBudget = 24;
@@ -98,7 +101,7 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
       m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
       m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_maxRadius(300.), m_radiusSweep(false),
-      m_threshold(0.10), m_planner(), m_noRois(), m_lastSearchWasFull(true)
+      m_threshold(0.07), m_planner(), m_noRois(), m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
   m_allAroundTried.reserve(kAllAroundBudget);
@@ -406,7 +409,7 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
       // full-resolution maximum is not needed (it was a tenth of a tracking frame). The score is then the
       // full-resolution map at the centre read, one evaluation of Eq. 5.
       vpSSLLandmark tracked = l;
-      read = m_radiusEstimator.estimate(*raw, tracked, scaled);
+      read = m_radiusEstimator.estimate(*raw, tracked, scaled) && selfSimilar(*raw, tracked);
       if (read && coarse) {
         tracked.score = scoreAt(I, tracked.u, tracked.v);
       }
@@ -427,8 +430,10 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
         l.score = std::min(1., static_cast<double>(fine.value) / m_match.getMaxValue());
       }
       // The rays' reading is the more precise; where it cannot follow the rings of a point-symmetric candidate
-      // (small, blurred or strongly oblique landmarks), the rings are read all around at once.
-      if (!m_radiusEstimator.estimate(*raw, l) && !readAllAround(*raw, l)) {
+      // (small, blurred or strongly oblique landmarks), or where what they read does not shrink by p all the way
+      // in, the rings are read all around at once.
+      const bool rays = m_radiusEstimator.estimate(*raw, l) && selfSimilar(*raw, l);
+      if (!rays && !readAllAround(*raw, l)) {
         continue;
       }
     }
@@ -471,6 +476,14 @@ bool vpSSLDetectionPipeline::insideFound(double u, double v) const
     }
   }
   return false;
+}
+
+bool vpSSLDetectionPipeline::selfSimilar(const vpImage<unsigned char> &raw, const vpSSLLandmark &l)
+{
+  // The rings the rays read must shrink by p all the way in, as far as they are resolved: a bull's-eye of equal
+  // rings matches the outer two or three only, and so does a landmark read at R / p where dark surroundings past the
+  // white margin continue its pattern on most rays.
+  return m_concentricReader.similarity(raw, l) >= kMinSimilarity;
 }
 
 bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
@@ -573,7 +586,7 @@ void vpSSLDetectionPipeline::rereadPredicted(const vpImage<unsigned char> &raw, 
       l.u = 2. * l.u + 0.5;
       l.v = 2. * l.v + 0.5;
     }
-    if (!m_radiusEstimator.estimate(raw, l, scaled)) {
+    if (!m_radiusEstimator.estimate(raw, l, scaled) || !selfSimilar(raw, l)) {
       m_planner.defer(k);
       continue;
     }

@@ -86,6 +86,8 @@ private:
                      const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
   // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame.
   bool insideFound(double u, double v) const;
+  // Whether the ring profile inside \e l's outer ellipse follows s_p (vpSSLConcentricReader::similarity()).
+  bool selfSimilar(const vpImage<unsigned char> &raw, const vpSSLLandmark &l);
   // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
   bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
   // Sets \e map to I's size and to 0 where the last call wrote it.

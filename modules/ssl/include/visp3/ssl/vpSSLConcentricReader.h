@@ -54,6 +54,14 @@ public:
   //! Correlation of the last read's ring profile with the square wave \f$ s_p \f$ (1: a sharp landmark).
   double getSimilarity() const { return m_similarity; }
 
+  /*!
+    Correlation with the square wave \f$ s_p \f$ of the ring profile inside \e landmark's outer ellipse (its
+    centre, radius, minorRadius and theta), averaged around the ellipses of its shape, over every ring at least
+    1.2 px wide: 1 for a sharp landmark, lower when blur greys the inner rings, and low or negative for concentric
+    rings that do not shrink by p (a bull's-eye of equal rings, which matches the outer rings only).
+  */
+  double similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark);
+
 private:
   struct Fit
   {
@@ -65,6 +73,7 @@ private:
   bool grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best, double &bestRadius) const;
   bool readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh);
   double band(double tau0, double tau1, int sector) const;
+  double profileSimilarity(const double *level, double tauA, double tR) const;
 
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius

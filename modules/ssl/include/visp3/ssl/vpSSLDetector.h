@@ -100,7 +100,7 @@ public:
   void setShortWindow(unsigned int w);
   //! Short window of a full search (setShortWindow()), 0 if none.
   unsigned int getShortWindow() const;
-  //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.10).
+  //! Score threshold in [0, 1] on the normalised matching value at a peak (default 0.07).
   void setThreshold(double threshold);
   //! Brightness normalisation before matching (default on, paper Fig. 13).
   void setBrightnessNormalization(bool enable);
