@@ -50,6 +50,16 @@ const vpSSLCorpusSheet &sheet()
   return s;
 }
 
+// B of ssl3-a3 rendered by the independent corpus, turned by tilt (deg) about the sheet's X axis, at depth (m),
+// blurred by sigma (px).
+vpSSLCorpusView renderB(double tilt, double depth, double sigma)
+{
+  vpSSLCorpusView v(vpSSLTarget::ssl3a3());
+  vpSSLCorpusPhotos none;
+  v.render(view(vpMath::rad(tilt), depth, sigma), &sheet(), none);
+  return v;
+}
+
 vpSSLConcentricReader reader()
 {
   vpSSLConcentricReader r;
@@ -64,14 +74,11 @@ TEST(ConcentricReader, ReadsObliqueAndBlurredLandmarks)
   // doc/detector.md: from a start 2 px off, B of 25 to 100 px seen face-on to 60 degrees off its normal. Up to 1 px
   // of blur: the centre within 0.8 % of the radius (0.3 px at least) of the projection of the landmark's centre, the
   // major semi-axis within 2 %, the minor one within 3.5 %. With 2 px of blur: 1.5 % (0.7 px), 2 % and 7 %.
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  vpSSLCorpusPhotos none;
   vpSSLConcentricReader r = reader();
   for (double tilt : {0., 30., 45., 60.}) {
     for (double depth : {0.8, 1.6, 3.2}) {
       for (double sigma : {0., 1., 2.}) {
-        vpSSLCorpusView v(target);
-        v.render(view(vpMath::rad(tilt), depth, sigma), &sheet(), none);
+        const vpSSLCorpusView v = renderB(tilt, depth, sigma);
         const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
         vpSSLLandmark l;
         l.u = B.u + 1.6;
@@ -135,15 +142,12 @@ TEST(ConcentricReader, SimilaritySeparatesLandmarksFromEqualRings)
   // vpSSLDetector keeps a landmark whose ring profile correlates with s_p at 0.5 or more (doc/detector.md): B of 25
   // to 100 px at its true ellipse, face-on to 60 degrees and blurred up to 2 px, reaches it (0.54 at 25 px, 60
   // degrees and 2 px of blur); a bull's-eye of four to six equal rings read at its outer edge does not.
-  const vpSSLTarget target = vpSSLTarget::ssl3a3();
-  vpSSLCorpusPhotos none;
   vpSSLConcentricReader r = reader();
   double lowest = 1.;
   for (double tilt : {0., 30., 45., 60.}) {
     for (double depth : {0.8, 1.6, 3.2}) {
       for (double sigma : {0., 1., 2.}) {
-        vpSSLCorpusView v(target);
-        v.render(view(vpMath::rad(tilt), depth, sigma), &sheet(), none);
+        const vpSSLCorpusView v = renderB(tilt, depth, sigma);
         const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
         vpSSLLandmark l;
         l.u = B.u;

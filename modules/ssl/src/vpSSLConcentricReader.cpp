@@ -213,14 +213,18 @@ bool vpSSLConcentricReader::readProfile(const vpImage<unsigned char> &I, const F
   std::fill(&m_sum[0][0], &m_sum[0][0] + kMaxBins * kSectors, 0.f);
   std::fill(&m_count[0][0], &m_count[0][0] + kMaxBins * kSectors, static_cast<unsigned short>(0));
   const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
+  // The bins' radii are the same on every ray.
+  double rho[kMaxBins];
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    rho[bin] = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+  }
   for (int k = 0; k < kRays; ++k) {
     const double t = 2. * M_PI * (k + 0.5) / kRays;
     const double dx = S(0, 0) * std::cos(t) + S(0, 1) * std::sin(t);
     const double dy = S(1, 0) * std::cos(t) + S(1, 1) * std::sin(t);
     const int sector = k * kSectors / kRays;
     for (int bin = 0; bin < m_nbBins; ++bin) {
-      const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
-      const double x = f.u + rho * dx, y = f.v + rho * dy;
+      const double x = f.u + rho[bin] * dx, y = f.v + rho[bin] * dy;
       if (!(x >= 0. && y >= 0. && x < W && y < H)) {
         break; // the rest of the ray is out of the image
       }
@@ -251,6 +255,20 @@ double vpSSLConcentricReader::band(double tau0, double tau1, int sector) const
     }
   }
   return count > 0 ? sum / count : -1.;
+}
+
+void vpSSLConcentricReader::allAround(double *level) const
+{
+  // The profile's mean level per bin over every sector, -1 where no ray reached.
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    double sum = 0.;
+    int count = 0;
+    for (int s = 0; s < kSectors; ++s) {
+      sum += m_sum[bin][s];
+      count += m_count[bin][s];
+    }
+    level[bin] = count > 0 ? sum / count : -1.;
+  }
 }
 
 double vpSSLConcentricReader::profileSimilarity(const double *level, double tauA, double tR) const
@@ -305,15 +323,7 @@ double vpSSLConcentricReader::similarity(const vpImage<unsigned char> &I, const 
   }
   readProfile(I, f, tauA - 0.5, tR);
   double level[kMaxBins];
-  for (int bin = 0; bin < m_nbBins; ++bin) {
-    double sum = 0.;
-    int count = 0;
-    for (int k = 0; k < kSectors; ++k) {
-      sum += m_sum[bin][k];
-      count += m_count[bin][k];
-    }
-    level[bin] = count > 0 ? sum / count : -1.;
-  }
+  allAround(level);
   return profileSimilarity(level, tauA, tR);
 }
 
@@ -404,15 +414,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
   const double ringShare = 1. - std::sqrt(m_p); // width of the ring at radius rho, over rho
   const double tauA = std::log(kMinRingWidth / ringShare) / L, tauB = std::log(bestRadius) / L;
   double level[kMaxBins];
-  for (int bin = 0; bin < m_nbBins; ++bin) {
-    double sum = 0.;
-    int count = 0;
-    for (int s = 0; s < kSectors; ++s) {
-      sum += m_sum[bin][s];
-      count += m_count[bin][s];
-    }
-    level[bin] = count > 0 ? sum / count : -1.;
-  }
+  allAround(level);
   // The window seldom holds a whole number of periods: the levels are correlated about their mean, or the half
   // of the wave with more bins in the window would win by the mean level alone.
   double mean = 0.;

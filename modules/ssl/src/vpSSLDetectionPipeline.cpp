@@ -409,7 +409,8 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
       // full-resolution maximum is not needed (it was a tenth of a tracking frame). The score is then the
       // full-resolution map at the centre read, one evaluation of Eq. 5.
       vpSSLLandmark tracked = l;
-      read = m_radiusEstimator.estimate(*raw, tracked, scaled) && selfSimilar(*raw, tracked);
+      // Held within 11 % of a landmark that passed selfSimilar(), the re-reading is not checked again.
+      read = m_radiusEstimator.estimate(*raw, tracked, scaled);
       if (read && coarse) {
         tracked.score = scoreAt(I, tracked.u, tracked.v);
       }
@@ -586,7 +587,7 @@ void vpSSLDetectionPipeline::rereadPredicted(const vpImage<unsigned char> &raw, 
       l.u = 2. * l.u + 0.5;
       l.v = 2. * l.v + 0.5;
     }
-    if (!m_radiusEstimator.estimate(raw, l, scaled) || !selfSimilar(raw, l)) {
+    if (!m_radiusEstimator.estimate(raw, l, scaled)) {
       m_planner.defer(k);
       continue;
     }

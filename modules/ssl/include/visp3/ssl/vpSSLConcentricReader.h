@@ -73,6 +73,7 @@ private:
   bool grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best, double &bestRadius) const;
   bool readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh);
   double band(double tau0, double tau1, int sector) const;
+  void allAround(double *level) const;
   double profileSimilarity(const double *level, double tauA, double tR) const;
 
   double m_p;
