@@ -223,12 +223,12 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
       result.residual = residual;
       return;
     }
-    // No hypothesis as good as the best puts the big landmark among the detections: they are smaller landmarks of
+    // No equally complete hypothesis puts the big landmark among the detections: they are smaller landmarks of
     // the target, and taking the biggest of them for the big one (case 1) would misread the range by the ratio of
     // their radii. When their labels are ambiguous (two landmarks of equal size, S1 and S2 of ssl3-a3, swap under a
     // half turn), the target is taken the right way up: the hypothesis with the least rotation in the image. A
     // detection of another size where a hypothesis puts a landmark it did not match (the big one read at one of
-    // its inner copies, or three equal circles) leaves the reading to case 1, as before.
+    // its inner copies, or three equal circles) leaves the reading to case 1.
     bool bigSeen = false;
     size_t upright = best;
     for (size_t h = 0; h < H; ++h) {
