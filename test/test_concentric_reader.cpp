@@ -60,6 +60,20 @@ vpSSLCorpusView renderB(double tilt, double depth, double sigma)
   return v;
 }
 
+// Calls f(view, B's truth, blur sigma) on B of 25 to 100 px (depth 3.2 to 0.8 m) seen face-on to 60 degrees off its
+// normal, sharp to blurred by 2 px.
+template <typename F> void forEachB(F f)
+{
+  for (double tilt : {0., 30., 45., 60.}) {
+    for (double depth : {0.8, 1.6, 3.2}) {
+      for (double sigma : {0., 1., 2.}) {
+        const vpSSLCorpusView v = renderB(tilt, depth, sigma);
+        f(v, v.getTruth()[0], sigma);
+      }
+    }
+  }
+}
+
 vpSSLConcentricReader reader()
 {
   vpSSLConcentricReader r;
@@ -75,30 +89,24 @@ TEST(ConcentricReader, ReadsObliqueAndBlurredLandmarks)
   // of blur: the centre within 0.8 % of the radius (0.3 px at least) of the projection of the landmark's centre, the
   // major semi-axis within 2 %, the minor one within 3.5 %. With 2 px of blur: 1.5 % (0.7 px), 2 % and 7 %.
   vpSSLConcentricReader r = reader();
-  for (double tilt : {0., 30., 45., 60.}) {
-    for (double depth : {0.8, 1.6, 3.2}) {
-      for (double sigma : {0., 1., 2.}) {
-        const vpSSLCorpusView v = renderB(tilt, depth, sigma);
-        const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
-        vpSSLLandmark l;
-        l.u = B.u + 1.6;
-        l.v = B.v - 1.2;
-        const std::string what = "tilt " + std::to_string(tilt) + " depth " + std::to_string(depth) + " sigma " +
-                                 std::to_string(sigma) + " B " + std::to_string(B.a) + " px";
-        ASSERT_TRUE(r.read(v.getImage(), l)) << what << ", stage " << r.getStage();
-        const double centre = std::hypot(l.u - B.u, l.v - B.v);
-        if (sigma <= 1.) {
-          EXPECT_LT(centre, std::max(0.3, 0.008 * B.a)) << what;
-          EXPECT_NEAR(l.radius / B.a, 1., 0.02) << what;
-          EXPECT_NEAR(l.minorRadius / B.b, 1., 0.035) << what;
-        } else {
-          EXPECT_LT(centre, std::max(0.7, 0.015 * B.a)) << what;
-          EXPECT_NEAR(l.radius / B.a, 1., 0.02) << what;
-          EXPECT_NEAR(l.minorRadius / B.b, 1., 0.07) << what;
-        }
-      }
+  forEachB([&](const vpSSLCorpusView &v, const vpSSLCorpusLandmarkTruth &B, double sigma) {
+    vpSSLLandmark l;
+    l.u = B.u + 1.6;
+    l.v = B.v - 1.2;
+    const std::string what = "view angle " + std::to_string(B.viewAngle) + " sigma " + std::to_string(sigma) + " B " +
+                             std::to_string(B.a) + " px";
+    ASSERT_TRUE(r.read(v.getImage(), l)) << what << ", stage " << r.getStage();
+    const double centre = std::hypot(l.u - B.u, l.v - B.v);
+    if (sigma <= 1.) {
+      EXPECT_LT(centre, std::max(0.3, 0.008 * B.a)) << what;
+      EXPECT_NEAR(l.radius / B.a, 1., 0.02) << what;
+      EXPECT_NEAR(l.minorRadius / B.b, 1., 0.035) << what;
+    } else {
+      EXPECT_LT(centre, std::max(0.7, 0.015 * B.a)) << what;
+      EXPECT_NEAR(l.radius / B.a, 1., 0.02) << what;
+      EXPECT_NEAR(l.minorRadius / B.b, 1., 0.07) << what;
     }
-  }
+  });
 }
 
 TEST(ConcentricReader, ReadsNothingOnDiscsBullseyesAndChessboards)
@@ -144,22 +152,15 @@ TEST(ConcentricReader, SimilaritySeparatesLandmarksFromEqualRings)
   // degrees and 2 px of blur); a bull's-eye of four to six equal rings read at its outer edge does not.
   vpSSLConcentricReader r = reader();
   double lowest = 1.;
-  for (double tilt : {0., 30., 45., 60.}) {
-    for (double depth : {0.8, 1.6, 3.2}) {
-      for (double sigma : {0., 1., 2.}) {
-        const vpSSLCorpusView v = renderB(tilt, depth, sigma);
-        const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
-        vpSSLLandmark l;
-        l.u = B.u;
-        l.v = B.v;
-        l.radius = B.a;
-        l.minorRadius = B.b;
-        l.theta = B.theta;
-        const double s = r.similarity(v.getImage(), l);
-        lowest = std::min(lowest, s);
-      }
-    }
-  }
+  forEachB([&](const vpSSLCorpusView &v, const vpSSLCorpusLandmarkTruth &B, double) {
+    vpSSLLandmark l;
+    l.u = B.u;
+    l.v = B.v;
+    l.radius = B.a;
+    l.minorRadius = B.b;
+    l.theta = B.theta;
+    lowest = std::min(lowest, r.similarity(v.getImage(), l));
+  });
   EXPECT_GE(lowest, 0.5);
   double highest = -1.;
   const int N = 201, c = 100;

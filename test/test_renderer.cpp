@@ -25,41 +25,6 @@ double dist(const vpImagePoint &a, const vpImagePoint &b)
   return vpImagePoint::distance(a, b);
 }
 
-// Darkness-weighted image centroid of a landmark predicted by forward projection: the target plane is
-// integrated in polar coordinates, each element projected (vpMeterPixelConversion, distortion included)
-// and weighted by its darkness and its image area (finite-difference Jacobian). Independent of the
-// renderer's backward ray casting, and exact under perspective, where the ring centre is not the
-// projected centre.
-vpImagePoint forwardDarknessCentroid(const vpCameraParameters &cam, const vpHomogeneousMatrix &cMo,
-                                     const vpSSLTargetLandmark &l)
-{
-  const int nRho = 1500, nPhi = 360;
-  const double h = 1e-4 * l.radius;
-  double su = 0., sv = 0., sw = 0.;
-  for (int i = 0; i < nRho; ++i) {
-    const double rho = (i + 0.5) * l.radius / nRho;
-    const double darkness = 1. - vpSSLPattern::circular(rho, 0., l.radius, l.p);
-    if (darkness == 0.) {
-      continue;
-    }
-    for (int j = 0; j < nPhi; ++j) {
-      const double phi = 2. * M_PI * (j + 0.5) / nPhi;
-      const double X = l.x + rho * std::cos(phi), Y = l.y + rho * std::sin(phi);
-      const vpImagePoint p = sslt::projectPoint(cam, cMo, X, Y);
-      const vpImagePoint px0 = sslt::projectPoint(cam, cMo, X - h, Y), px1 = sslt::projectPoint(cam, cMo, X + h, Y);
-      const vpImagePoint py0 = sslt::projectPoint(cam, cMo, X, Y - h), py1 = sslt::projectPoint(cam, cMo, X, Y + h);
-      const double jac = std::fabs((px1.get_u() - px0.get_u()) * (py1.get_v() - py0.get_v()) -
-                                   (px1.get_v() - px0.get_v()) * (py1.get_u() - py0.get_u())) /
-                         (4. * h * h);
-      const double w = darkness * rho * jac;
-      su += w * p.get_u();
-      sv += w * p.get_v();
-      sw += w;
-    }
-  }
-  return vpImagePoint(sv / sw, su / sw);
-}
-
 // Rendered darkness centroid of landmark k, over a disc that covers its projected ellipse and its
 // anti-aliased edge. The renderer's background must be white: the disc may reach beyond the sheet.
 vpImagePoint renderedCentroid(const vpSSLRenderer &renderer, const vpImage<unsigned char> &I,
@@ -132,7 +97,7 @@ TEST(Renderer, BigTiltedLandmarkMatchesForwardProjection)
   for (double tilt : {30., 60.}) {
     vpHomogeneousMatrix cMo = sslt::lookAt(0.8, tilt, 30., 15.);
     renderer.render(cMo, I);
-    const vpImagePoint expected = forwardDarknessCentroid(kCam, cMo, renderer.getTarget().getLandmark(0));
+    const vpImagePoint expected = sslt::forwardDarknessCentroid(kCam, cMo, renderer.getTarget().getLandmark(0));
     const vpImagePoint rendered = renderedCentroid(renderer, I, cMo, 0);
     EXPECT_LT(dist(rendered, expected), 0.1) << "tilt " << tilt;
     std::cout << "tilt " << tilt << ": perspective shift of the darkness centroid from the projected centre "
@@ -270,7 +235,7 @@ TEST(Renderer, DistortedCameraCentresAgree)
     const std::vector<vpImagePoint> centres = renderer.projectLandmarks(cMo);
     for (size_t k = 0; k < centres.size(); ++k) {
       const vpImagePoint rendered = renderedCentroid(renderer, I, cMo, k);
-      const vpImagePoint expected = forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
+      const vpImagePoint expected = sslt::forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
       EXPECT_LT(dist(rendered, expected), 0.1) << "tx " << tx << " landmark " << k;
       if (dist(centres[k], vpImagePoint(240., 320.)) < 150.) {
         ++nearCentre;
@@ -283,7 +248,7 @@ TEST(Renderer, DistortedCameraCentresAgree)
   const vpHomogeneousMatrix cMo = sslt::lookAt(1.2, 40., 60., 10.);
   renderer.render(cMo, I);
   for (size_t k = 0; k < renderer.getTarget().size(); ++k) {
-    const vpImagePoint expected = forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
+    const vpImagePoint expected = sslt::forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
     EXPECT_LT(dist(renderedCentroid(renderer, I, cMo, k), expected), 0.1) << "landmark " << k;
   }
 }
@@ -301,7 +266,7 @@ TEST(Renderer, FisheyeImageAgreesWithForwardProjection)
   const vpHomogeneousMatrix cMo = sslt::lookAt(0.9);
   renderer.render(cMo, I);
   for (size_t k = 0; k < renderer.getTarget().size(); ++k) {
-    const vpImagePoint expected = forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
+    const vpImagePoint expected = sslt::forwardDarknessCentroid(cam, cMo, renderer.getTarget().getLandmark(k));
     EXPECT_LT(dist(renderedCentroid(renderer, I, cMo, k), expected), 0.1) << "landmark " << k;
   }
 }

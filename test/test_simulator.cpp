@@ -39,35 +39,6 @@ std::vector<vpSSLScenarioFrame> frames(const std::string &name, unsigned int n, 
   return scenario.generate();
 }
 
-// Darkness-weighted image centroid of landmark l at cMo by forward projection: the pattern integrated in polar
-// coordinates on the sheet, each element weighted by its darkness and its image area (the homography's
-// Jacobian, proportional to 1 / w^3). Under perspective the centroid of the ring's image is not the image of
-// its centre: this is what a perfect image would show, independently of the renderer.
-vpImagePoint forwardCentroid(const vpHomogeneousMatrix &cMo, const vpSSLTargetLandmark &l)
-{
-  const int nRho = 2000, nPhi = 256;
-  double su = 0., sv = 0., sw = 0.;
-  for (int i = 0; i < nRho; ++i) {
-    const double rho = (i + 0.5) * l.radius / nRho;
-    const double darkness = 1. - vpSSLPattern::circular(rho, 0., l.radius, l.p);
-    if (darkness == 0.) {
-      continue;
-    }
-    for (int j = 0; j < nPhi; ++j) {
-      const double phi = 2. * M_PI * (j + 0.5) / nPhi;
-      const double X = l.x + rho * std::cos(phi), Y = l.y + rho * std::sin(phi);
-      const double x = cMo[0][0] * X + cMo[0][1] * Y + cMo[0][3];
-      const double y = cMo[1][0] * X + cMo[1][1] * Y + cMo[1][3];
-      const double w = cMo[2][0] * X + cMo[2][1] * Y + cMo[2][3];
-      const double weight = darkness * rho / (w * w * w);
-      su += weight * (kCam.get_u0() + kCam.get_px() * x / w);
-      sv += weight * (kCam.get_v0() + kCam.get_py() * y / w);
-      sw += weight;
-    }
-  }
-  return vpImagePoint(sv / sw, su / sw);
-}
-
 // Darkness centroid of landmark l in a clean render, over the pixels whose ray meets the sheet within
 // maskRadius of its centre (white paper, or the white background, around it). Only the window around the
 // landmark is rendered, 8 x 8 samples per pixel.
@@ -148,7 +119,7 @@ TEST(Simulator, GroundTruthAgreesWithTheImagesToATenthOfAPixel)
         continue;
       }
       // Perspective moves the ring's centroid off the projected centre by a known amount (forward model).
-      const vpImagePoint bias = forwardCentroid(f.cMo, l) - truth[k];
+      const vpImagePoint bias = sslt::forwardDarknessCentroid(kCam, f.cMo, l) - truth[k];
       const vpImagePoint seen = renderedCentroid(f.cMo, l, l.radius + 2.5 * f.range / kCam.get_px());
       const double error = vpImagePoint::distance(seen - bias, truth[k]);
       worst = std::max(worst, error);

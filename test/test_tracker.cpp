@@ -76,21 +76,17 @@ double positionError(const vpHomogeneousMatrix &cMo, const vpPoseVector &gt)
   return (cMo.getTranslationVector() - cMoGt.getTranslationVector()).frobeniusNorm();
 }
 
-const char *name(vpSSLTrackerState s)
-{
-  switch (s) {
-  case SSL_TRACKER_SEARCHING:
-    return "searching";
-  case SSL_TRACKER_ACQUIRED:
-    return "acquired";
-  case SSL_TRACKER_TRACKING:
-    return "tracking";
-  case SSL_TRACKER_LOST:
-    return "lost";
-  }
-  return "?";
-}
 } // namespace
+
+// The names tutorial-ssl-tracker prints and writes in the state column of its CSV.
+TEST(TrackerState, NamesAreTheCsvOnes)
+{
+  EXPECT_STREQ(vpSSLTrackerStateName(SSL_TRACKER_SEARCHING), "searching");
+  EXPECT_STREQ(vpSSLTrackerStateName(SSL_TRACKER_ACQUIRED), "acquired");
+  EXPECT_STREQ(vpSSLTrackerStateName(SSL_TRACKER_TRACKING), "tracking");
+  EXPECT_STREQ(vpSSLTrackerStateName(SSL_TRACKER_LOST), "lost");
+  EXPECT_STREQ(vpSSLTrackerStateName(static_cast<vpSSLTrackerState>(7)), "?");
+}
 
 // Paper Sec. 3.3: fusing the odometry with the detections gives a better pose than each frame alone.
 class TrackerAccuracy : public ::testing::TestWithParam<bool>
@@ -137,8 +133,9 @@ TEST_P(TrackerAccuracy, TrackedPoseStaysWithinCentimetresOfGroundTruth)
         trackerErrors.push_back(trackerError);
     }
     std::printf("frame %2zu range %6.2f state %-9s nbPoints %u full %d tracker %.4f m single %.4f m\n", i,
-                f.hasGroundTruth ? vpHomogeneousMatrix(f.cMo).getTranslationVector().frobeniusNorm() : 0., name(state),
-                tracker.getNbLandmarks(), tracker.getLastSearchWasFull() ? 1 : 0, trackerError, singleError);
+                f.hasGroundTruth ? vpHomogeneousMatrix(f.cMo).getTranslationVector().frobeniusNorm() : 0.,
+                vpSSLTrackerStateName(state), tracker.getNbLandmarks(), tracker.getLastSearchWasFull() ? 1 : 0,
+                trackerError, singleError);
   }
   const double trackerMedian = sslt::median(trackerErrors), singleMedian = sslt::median(singleErrors);
   std::printf("median position error: tracker %.4f m (%zu frames tracking), single frame %.4f m (%zu frames), "

@@ -62,9 +62,6 @@ cannot be written, or any other runtime failure; 2 on a bad option, camera file 
 error is one line on stderr.
 )";
 
-// vpSSLTrackerState in the order of its values.
-const char *const kStateNames[] = {"searching", "acquired", "tracking", "lost"};
-
 int run(int argc, char **argv)
 {
   const std::string data = ssltut::dataDir();
@@ -163,7 +160,7 @@ int run(int argc, char **argv)
       d.polygon(detector.getPolygon(i), vpColor::cyan, 1);
     }
     std::ostringstream ss;
-    ss << "Frame " << frame << ": " << kStateNames[state];
+    ss << "Frame " << frame << ": " << vpSSLTrackerStateName(state);
     if (tracker.hasPose()) {
       const vpHomogeneousMatrix cMo = tracker.getPose();
       ss << ", range " << vpMath::round(cMo.getTranslationVector().frobeniusNorm() * 100.) / 100. << " m";

@@ -92,21 +92,6 @@ const char *kProgram = "tutorial-ssl-tracker";
   std::exit(code);
 }
 
-const char *stateName(vpSSLTrackerState s)
-{
-  switch (s) {
-  case SSL_TRACKER_SEARCHING:
-    return "searching";
-  case SSL_TRACKER_ACQUIRED:
-    return "acquired";
-  case SSL_TRACKER_TRACKING:
-    return "tracking";
-  case SSL_TRACKER_LOST:
-    return "lost";
-  }
-  return "?";
-}
-
 std::string cell(double x, int digits)
 {
   if (!std::isfinite(x)) {
@@ -437,15 +422,16 @@ int run(int argc, char **argv)
         }
       }
     }
-    csv << frame.index << "," << cell(frame.t, 6) << "," << stateName(state) << "," << tracker.getNbLandmarks() << ","
-        << (tracker.getLastSearchWasFull() ? 1 : 0) << "," << (tracker.getLastSmallLandmarkMode() ? 1 : 0) << ","
-        << (oriented ? 1 : 0) << "," << poseCells(cMo, hasPose) << "," << poseCells(cMoTrue, truth) << ","
-        << cell(range, 4) << "," << cell(error, 5) << "," << cell(angle, 3) << "," << singleKind << ","
-        << cell(singleError, 5) << "," << cell(singleAngle, 3) << "\n";
+    csv << frame.index << "," << cell(frame.t, 6) << "," << vpSSLTrackerStateName(state) << ","
+        << tracker.getNbLandmarks() << "," << (tracker.getLastSearchWasFull() ? 1 : 0) << ","
+        << (tracker.getLastSmallLandmarkMode() ? 1 : 0) << "," << (oriented ? 1 : 0) << "," << poseCells(cMo, hasPose)
+        << "," << poseCells(cMoTrue, truth) << "," << cell(range, 4) << "," << cell(error, 5) << "," << cell(angle, 3)
+        << "," << singleKind << "," << cell(singleError, 5) << "," << cell(singleAngle, 3) << "\n";
     if (!quiet) {
       char line[256];
-      std::snprintf(line, sizeof(line), "frame %5u t %8.3f %-9s nbPoints %u%s", frame.index, frame.t, stateName(state),
-                    tracker.getNbLandmarks(), tracker.getLastSmallLandmarkMode() ? " small" : "");
+      std::snprintf(line, sizeof(line), "frame %5u t %8.3f %-9s nbPoints %u%s", frame.index, frame.t,
+                    vpSSLTrackerStateName(state), tracker.getNbLandmarks(),
+                    tracker.getLastSmallLandmarkMode() ? " small" : "");
       log << line;
       if (hasPose) {
         const vpTranslationVector t = cMo.getTranslationVector();
@@ -475,7 +461,7 @@ int run(int argc, char **argv)
         vpImageDraw::drawFrame(annotated, cMo, cam, 0.1, vpColor::none, 2);
       }
       font.drawText(annotated,
-                    "frame " + std::to_string(frame.index) + " " + stateName(state) + " nbPoints " +
+                    "frame " + std::to_string(frame.index) + " " + vpSSLTrackerStateName(state) + " nbPoints " +
                         std::to_string(tracker.getNbLandmarks()),
                     vpImagePoint(8, 8), vpColor::yellow, vpColor::black);
       if (!outputDir.empty()) {

@@ -13,6 +13,8 @@
 #include <visp3/core/vpRotationMatrix.h>
 #include <visp3/core/vpThetaUVector.h>
 
+#include <visp3/ssl/vpSSLPattern.h>
+
 namespace {
 unsigned char toGrey(double g)
 {
@@ -161,6 +163,36 @@ double apparentRadius(const vpCameraParameters &cam, const vpHomogeneousMatrix &
     best = std::max(best, hi - lo);
   }
   return 0.5 * best;
+}
+
+vpImagePoint forwardDarknessCentroid(const vpCameraParameters &cam, const vpHomogeneousMatrix &cMo,
+                                     const vpSSLTargetLandmark &l)
+{
+  const int nRho = 1500, nPhi = 360;
+  const double h = 1e-4 * l.radius;
+  double su = 0., sv = 0., sw = 0.;
+  for (int i = 0; i < nRho; ++i) {
+    const double rho = (i + 0.5) * l.radius / nRho;
+    const double darkness = 1. - vpSSLPattern::circular(rho, 0., l.radius, l.p);
+    if (darkness == 0.) {
+      continue;
+    }
+    for (int j = 0; j < nPhi; ++j) {
+      const double phi = 2. * M_PI * (j + 0.5) / nPhi;
+      const double X = l.x + rho * std::cos(phi), Y = l.y + rho * std::sin(phi);
+      const vpImagePoint p = projectPoint(cam, cMo, X, Y);
+      const vpImagePoint px0 = projectPoint(cam, cMo, X - h, Y), px1 = projectPoint(cam, cMo, X + h, Y);
+      const vpImagePoint py0 = projectPoint(cam, cMo, X, Y - h), py1 = projectPoint(cam, cMo, X, Y + h);
+      const double jac = std::fabs((px1.get_u() - px0.get_u()) * (py1.get_v() - py0.get_v()) -
+                                   (px1.get_v() - px0.get_v()) * (py1.get_u() - py0.get_u())) /
+                         (4. * h * h);
+      const double w = darkness * rho * jac;
+      su += w * p.get_u();
+      sv += w * p.get_v();
+      sw += w;
+    }
+  }
+  return vpImagePoint(sv / sw, su / sw);
 }
 
 vpImagePoint darknessCentroid(const vpImage<unsigned char> &I, const vpImagePoint &centre, double radius)

@@ -67,6 +67,15 @@ vpImagePoint projectPoint(const vpCameraParameters &cam, const vpHomogeneousMatr
 double apparentRadius(const vpCameraParameters &cam, const vpHomogeneousMatrix &cMo, double x, double y, double radius);
 
 /*!
+  Darkness-weighted image centroid of landmark \e l at pose cMo by forward projection (distortion included): the
+  printed pattern integrated in polar coordinates on the sheet, each element weighted by its darkness and its image
+  area (finite-difference Jacobian of projectPoint()). Under perspective the centroid of a ring's image is not the
+  image of its centre: this is what a perfect image shows, independently of any renderer.
+*/
+vpImagePoint forwardDarknessCentroid(const vpCameraParameters &cam, const vpHomogeneousMatrix &cMo,
+                                     const vpSSLTargetLandmark &l);
+
+/*!
   Centroid of the darkness (255 - I) over the pixels within \e radius pixels of \e centre. On a
   fronto-parallel anti-aliased landmark on white paper, with a radius that covers it and stays on the
   sheet, this is the landmark's centre (the pattern is point-symmetric).

@@ -20,6 +20,21 @@
 
 #include "vpSSLImageCheck.h"
 
+const char *vpSSLTrackerStateName(vpSSLTrackerState state)
+{
+  switch (state) {
+  case SSL_TRACKER_SEARCHING:
+    return "searching";
+  case SSL_TRACKER_ACQUIRED:
+    return "acquired";
+  case SSL_TRACKER_TRACKING:
+    return "tracking";
+  case SSL_TRACKER_LOST:
+    return "lost";
+  }
+  return "?";
+}
+
 vpSSLTracker::vpSSLTracker(const vpSSLTarget &target, const vpCameraParameters &cam, const vpHomogeneousMatrix &vMc)
     : m_target(target), m_cam(cam), m_cMv(), m_detector(target), m_estimator(target), m_filter(target, cam),
       m_state(SSL_TRACKER_SEARCHING), m_fullSearchPeriod(10), m_roiSize(100.), m_acquisitionFrames(3),

@@ -45,6 +45,13 @@ enum vpSSLTrackerState
 };
 
 /*!
+  \ingroup group_ssl
+  Name of a tracker state, as the tutorials print it and write it in their CSV: "searching", "acquired",
+  "tracking" or "lost" ("?" for a value outside the enum).
+*/
+VISP_SSL_EXPORT const char *vpSSLTrackerStateName(vpSSLTrackerState state);
+
+/*!
   \class vpSSLTracker
   \ingroup group_ssl
   \brief Tracks the target over an image sequence: predicts where its landmarks will be, detects only in
