@@ -394,6 +394,17 @@ HWY_INLINE void SumSharedPair(const SharedRows &S, const uint8_t *base, VI16 &e0
   FinishSums(mall1, modd1, f1, q1);
 }
 
+// One direction's sums over the block's one or two vectors (U), kept where they answer best.
+template <int U>
+HWY_INLINE void CombineBlock(const Params &P, int dir, int u, VI16 e0, VI16 o0, VI16 e1, VI16 o1, VI16 &bestE0,
+                             VI16 &bestO0, VI16 &bestE1, VI16 &bestO1)
+{
+  Combine(P, dir, u, e0, o0, bestE0, bestO0);
+  if (U > 1) {
+    Combine(P, dir, u + static_cast<int>(hn::Lanes(D8())), e1, o1, bestE1, bestO1);
+  }
+}
+
 /*
   M for the `count` (<= U N) pixels starting at column u of row v. A direction is computed when it is valid for
   at least one of them; the pixels for which it is not are masked out of the maximum (their loads still land in
@@ -413,12 +424,8 @@ HWY_INLINE void MatchBlock(const Params &P, const SharedRows &S, const uint8_t *
   if (shared != nullptr && valid[kPlusX] && valid[kMinusX]) {
     VI16 f0, q0, f1, q1;
     SumSharedPair<U>(S, shared, e0, o0, e1, o1, f0, q0, f1, q1);
-    Combine(P, kPlusX, u, e0, o0, bestE0, bestO0);
-    Combine(P, kMinusX, u, f0, q0, bestE0, bestO0);
-    if (U > 1) {
-      Combine(P, kPlusX, u + N, e1, o1, bestE1, bestO1);
-      Combine(P, kMinusX, u + N, f1, q1, bestE1, bestO1);
-    }
+    CombineBlock<U>(P, kPlusX, u, e0, o0, e1, o1, bestE0, bestO0, bestE1, bestO1);
+    CombineBlock<U>(P, kMinusX, u, f0, q0, f1, q1, bestE0, bestO0, bestE1, bestO1);
   } else {
     for (int dir = kPlusX; dir <= kMinusX; ++dir) {
       if (!valid[dir]) {
@@ -429,31 +436,21 @@ HWY_INLINE void MatchBlock(const Params &P, const SharedRows &S, const uint8_t *
       } else {
         SumDirection<U>(P, p, dir, S.live, S.nbTerms, e0, o0, e1, o1);
       }
-      Combine(P, dir, u, e0, o0, bestE0, bestO0);
-      if (U > 1) {
-        Combine(P, dir, u + N, e1, o1, bestE1, bestO1);
-      }
+      CombineBlock<U>(P, dir, u, e0, o0, e1, o1, bestE0, bestO0, bestE1, bestO1);
     }
   }
   if (valid[kPlusY] && valid[kMinusY]) {
     VI16 f0, q0, f1, q1;
     SumVerticalPair<U>(S, p, e0, o0, e1, o1, f0, q0, f1, q1);
-    Combine(P, kPlusY, u, e0, o0, bestE0, bestO0);
-    Combine(P, kMinusY, u, f0, q0, bestE0, bestO0);
-    if (U > 1) {
-      Combine(P, kPlusY, u + N, e1, o1, bestE1, bestO1);
-      Combine(P, kMinusY, u + N, f1, q1, bestE1, bestO1);
-    }
+    CombineBlock<U>(P, kPlusY, u, e0, o0, e1, o1, bestE0, bestO0, bestE1, bestO1);
+    CombineBlock<U>(P, kMinusY, u, f0, q0, f1, q1, bestE0, bestO0, bestE1, bestO1);
   } else {
     for (int dir = kPlusY; dir <= kMinusY; ++dir) {
       if (!valid[dir]) {
         continue;
       }
       SumDirection<U>(P, p, dir, S.live, S.nbTerms, e0, o0, e1, o1);
-      Combine(P, dir, u, e0, o0, bestE0, bestO0);
-      if (U > 1) {
-        Combine(P, dir, u + N, e1, o1, bestE1, bestO1);
-      }
+      CombineBlock<U>(P, dir, u, e0, o0, e1, o1, bestE0, bestO0, bestE1, bestO1);
     }
   }
   StoreMap(bestE0, bestO0, count, out);
