@@ -14,6 +14,9 @@
 #                  runs BIN ARGS and checks a bad input's contract: exit status CODE, exactly one line on stderr,
 #                  matching the grep pattern PATTERN (stdout in ./expect_error.out, stderr in
 #                  ./expect_error.err)
+#   run_or_stop WHAT ARGS...
+#                  runs BIN ARGS (stdout in ./run.log, stderr in ./run.err): a pass naming WHAT with the output, or a
+#                  fail and the script ends there (nothing after a failed run can be checked)
 set -u
 
 if [ $# -lt 3 ]; then
@@ -44,6 +47,16 @@ expect_error() {
   [ $rc -eq "$code" ] || fail "$* : exit code $rc, expected $code"
   [ "$(wc -l < expect_error.err)" -eq 1 ] || fail "$* : expected one line on stderr, got: $(cat expect_error.err)"
   grep -q -- "$pattern" expect_error.err || fail "$* : stderr does not mention '$pattern': $(cat expect_error.err)"
+}
+run_or_stop() {
+  local what=$1
+  shift
+  if "$BIN" "$@" >run.log 2>run.err; then
+    pass "$what ran: $(cat run.log)"
+  else
+    fail "$what failed: $(cat run.err)"
+    e2e_finish
+  fi
 }
 e2e_finish() {
   if [ "$FAILS" -ne 0 ]; then

@@ -5,12 +5,7 @@
 # Usage: bash servo_docking.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo "$@"
 
-if "$BIN" --scenario fig9 --method ssl --duration 40 --quiet --output-dir out >run.log 2>run.err; then
-  pass "fig9 with SSL ran: $(cat run.log)"
-else
-  fail "fig9 run failed: $(cat run.err)"
-  e2e_finish
-fi
+run_or_stop "fig9 with SSL" --scenario fig9 --method ssl --duration 40 --quiet --output-dir out
 
 # The summary line: docked, and when.
 python3 - run.log out/servo-fig9-ssl.csv <<'PY' 2>check.err && pass "fig9: docks as documented" || fail "fig9: $(cat check.err)"

@@ -6,12 +6,7 @@
 # Usage: bash servo_reacquisition.sh TUTORIAL_BIN_DIR DATA_DIR   (run from a scratch directory)
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo "$@"
 
-if "$BIN" --scenario fig7 --method ssl --duration 90 --quiet --output-dir out >run.log 2>run.err; then
-  pass "fig7 (D = 90 s) with SSL ran: $(cat run.log)"
-else
-  fail "fig7 run failed: $(cat run.err)"
-  e2e_finish
-fi
+run_or_stop "fig7 (D = 90 s) with SSL" --scenario fig7 --method ssl --duration 90 --quiet --output-dir out
 
 python3 - run.log out/servo-fig7-ssl.csv <<'PY' 2>check.err && pass "fig7: searches, re-acquires, homes again" || fail "fig7: $(cat check.err)"
 import csv, re, sys
