@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <visp3/core/vpException.h>
+#include <visp3/ssl/vpSSLFinite.h>
 #include <visp3/ssl_io/vpSSLOdometryTrack.h>
 
 #include "fuzz_common.h"
@@ -17,10 +18,8 @@ const char *kQuaternion = "t,tx,ty,tz,qx,qy,qz,qw";
 // determinant 1 (to rounding).
 bool validPose(const vpHomogeneousMatrix &M)
 {
-  for (unsigned int r = 0; r < 4; ++r)
-    for (unsigned int c = 0; c < 4; ++c)
-      if (!std::isfinite(M[r][c]))
-        return false;
+  if (!vpSSLFinite::isFinite(M))
+    return false;
   for (unsigned int r = 0; r < 3; ++r)
     if (std::fabs(M[r][3]) > vpSSLOdometryTrack::maxTranslation())
       return false;
