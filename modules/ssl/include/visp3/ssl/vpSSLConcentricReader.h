@@ -62,17 +62,6 @@ public:
   */
   double similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark);
 
-  /*!
-    How much better the self-similar rings explain \e landmark's ring profile than rings of equal width do: the
-    correlation of the profile (averaged around the ellipses of its shape, from \f$ R p^4 \f$ or 1.5 px to just
-    outside its outer ellipse) with blurred self-similar rings minus its correlation with blurred equal-width rings,
-    each the best over the blur, the ring width and an outer radius within 6 % of the landmark's. Blur greys a
-    landmark's inner rings and a bull's-eye's alike, so that both can pass similarity(); modelled with the blur, the two
-    differ in where their edges lie. Near 0 or positive for a landmark, clearly negative (-0.1 and below) for a
-    bull's-eye.
-  */
-  double equalRingsMargin(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark);
-
 private:
   struct Fit
   {
@@ -86,7 +75,6 @@ private:
   double band(double tau0, double tau1, int sector) const;
   void allAround(double *level) const;
   double profileSimilarity(const double *level, double tauA, double tR) const;
-  double modelCorrelation(const double *level, const double *rho, int first, int last, double R, double spacing) const;
 
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius
