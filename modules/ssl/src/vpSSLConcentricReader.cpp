@@ -55,6 +55,20 @@ const double kMinSimilarity = 0.5;
 const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
 const int kMinPairs = 2;
+// The ring models of equalRingsMargin(): how far outside the outer ellipse the profile is read (periods), the steps of
+// the outer radius (share of R, two each way), and the widths of the equal rings (shares of R, and their ratio).
+const double kModelOutside = 0.12;
+const double kModelPeriods = 4.;
+const double kModelRadiusStep = 0.03;
+const double kMinEqualShare = 0.03;
+const double kMaxEqualShare = 0.45;
+const double kEqualWidthStep = 1.15;
+// Narrowest ring a camera resolves (camera pixels: a ring pair of two pixels is sampled at the Nyquist rate), and the
+// periods of such rings, counted inwards from R, a landmark needs for the models to be fitted.
+const double kResolvedRing = 1.;
+const double kResolvedPeriods = 2.;
+// Innermost edge of the models (px).
+const double kMinModelEdge = 0.25;
 // Sobel gradient of the 3x3 box average at (u, v), 2 px or more inside the image: the 5x5 kernel smooths by
 // [1 3 4 3 1] across the derivative [-1 -1 0 1 1].
 void smoothedGradient(const vpImage<unsigned char> &I, int u, int v, double &gx, double &gy)
@@ -297,6 +311,140 @@ double vpSSLConcentricReader::profileSimilarity(const double *level, double tauA
     }
   }
   return n > 0 && ff > 0. ? sf / std::sqrt(ff * n) : 0.;
+}
+
+namespace {
+// The normal law's cumulative distribution, tabulated on [-kPhiReach, kPhiReach] with kPhiSteps steps per unit and
+// linearly interpolated (error below 1e-4): the ring models evaluate it for every bin and edge.
+const int kPhiReach = 6;
+const int kPhiSteps = 64;
+class PhiTable
+{
+public:
+  PhiTable()
+  {
+    for (int i = 0; i <= 2 * kPhiReach * kPhiSteps; ++i) {
+      m_v[i] = 0.5 * std::erfc(-(static_cast<double>(i) / kPhiSteps - kPhiReach) / M_SQRT2);
+    }
+  }
+  double operator()(double x) const
+  {
+    if (!(x > -kPhiReach)) {
+      return 0.;
+    }
+    if (x >= kPhiReach) {
+      return 1.;
+    }
+    const double t = (x + kPhiReach) * kPhiSteps;
+    const int i = static_cast<int>(t);
+    return m_v[i] + (t - i) * (m_v[i + 1] - m_v[i]);
+  }
+
+private:
+  double m_v[2 * kPhiReach * kPhiSteps + 2] = {};
+};
+const PhiTable kPhi;
+// Blurs of the ring models (px): sharp to the strongest defocus and forward scatter a landmark is read through.
+const double kModelSigmas[] = {0.6, 1., 1.6, 2.5, 4.};
+} // namespace
+
+double vpSSLConcentricReader::modelCorrelation(const double *level, const double *rho, int first, int last, double R,
+                                               double spacing) const
+{
+  // Best correlation, over the blur, of the levels in bins [first, last] with rings white outside R and alternating
+  // inwards at edges R spacing^j (spacing < 1, self-similar) or R - j spacing (spacing >= 1 px, equal widths). An edge
+  // contributes the normal law's distribution of its distance over the blur; the offset and the contrast are free
+  // (the correlation ignores them).
+  // Edges well inside the first bin add the same to every bin, and alternating edges within a quarter pixel of the
+  // centre cancel out.
+  const double reach =
+      std::max(kMinModelEdge, rho[first] - kPhiReach * kModelSigmas[sizeof(kModelSigmas) / sizeof(double) - 1]);
+  double best = -1.;
+  for (double sigma : kModelSigmas) {
+    double sm = 0., smm = 0., sl = 0., sll = 0., slm = 0.;
+    int count = 0;
+    // Every other bin: 12 per period still sample each edge's blur (a bin is 6 % of its radius).
+    for (int bin = first; bin <= last; bin += 2) {
+      if (level[bin] < 0.) {
+        continue;
+      }
+      double value = 0., sign = 1.;
+      for (double e = R; e > reach; e = spacing < 1. ? e * spacing : e - spacing, sign = -sign) {
+        value += sign * kPhi((rho[bin] - e) / sigma);
+      }
+      sm += value;
+      smm += value * value;
+      sl += level[bin];
+      sll += level[bin] * level[bin];
+      slm += level[bin] * value;
+      ++count;
+    }
+    if (count < 2) {
+      continue;
+    }
+    const double cov = slm - sl * sm / count, vm = smm - sm * sm / count, vl = sll - sl * sl / count;
+    if (vm > 1e-9 && vl > 1e-9) {
+      best = std::max(best, cov / std::sqrt(vm * vl));
+    }
+  }
+  return best;
+}
+
+double vpSSLConcentricReader::equalRingsMargin(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark,
+                                               double pixel)
+{
+  const double a = landmark.radius, b = landmark.minorRadius > 0. ? landmark.minorRadius : landmark.radius;
+  if (!(a > 0. && b > 0.) || !(a < 1e6) || I.getWidth() < 2 || I.getHeight() < 2) {
+    return 0.;
+  }
+  const double c = std::cos(landmark.theta), s = std::sin(landmark.theta);
+  const double major = b / a, minor = a / b; // Q's eigenvalues along the major and the minor axis
+  Fit f;
+  f.u = landmark.u;
+  f.v = landmark.v;
+  f.q[0] = major * c * c + minor * s * s;
+  f.q[1] = (major - minor) * c * s;
+  f.q[2] = major * s * s + minor * c * c;
+  const double L = m_logStep;
+  const double R = std::sqrt(a * b);
+  // Four periods inside R (R p^4, and no nearer the centre than 1.5 px), where the two models' edges part, and the
+  // white paper just outside R.
+  const double tR = std::log(R) / L;
+  const double tauLow = std::max(std::log(1.5) / L, tR - kModelPeriods);
+  // Where fewer than two periods of rings are resolved, what lies inside them depends on how the camera samples
+  // (greyed by a pixel's area, or aliased into a dark cross by one that samples a point), which neither model knows:
+  // such a landmark is not judged.
+  if (!(tR - std::log(kResolvedRing * pixel / (1. - std::sqrt(m_p))) / L >= kResolvedPeriods)) {
+    return 0.;
+  }
+  const double tauHigh = tR + kModelOutside;
+  if (!(tR - tauLow > 0.5)) {
+    return 0.;
+  }
+  readProfile(I, f, tauLow, tauHigh);
+  double level[kMaxBins], rho[kMaxBins];
+  allAround(level);
+  int first = m_nbBins, last = -1;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    rho[bin] = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * L);
+    if (level[bin] >= 0.) {
+      first = std::min(first, bin);
+      last = bin;
+    }
+  }
+  if (last - first < kBinsPerPeriod / 2) {
+    return 0.;
+  }
+  // The outer radius read is within a few per cent of the printed one (7 % at the 90th percentile on blurred views).
+  double selfSimilar = -1., equal = -1.;
+  for (int k = -2; k <= 2; ++k) {
+    const double Rk = R * (1. + kModelRadiusStep * k);
+    selfSimilar = std::max(selfSimilar, modelCorrelation(level, rho, first, last, Rk, std::sqrt(m_p)));
+    for (double w = std::max(kMinRingWidth, kMinEqualShare * Rk); w <= kMaxEqualShare * Rk; w *= kEqualWidthStep) {
+      equal = std::max(equal, modelCorrelation(level, rho, first, last, Rk, w));
+    }
+  }
+  return selfSimilar - equal;
 }
 
 double vpSSLConcentricReader::similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark)
