@@ -244,27 +244,3 @@ TEST(Detector, SettersRejectNonsense)
   EXPECT_THROW(detector.setThreshold(1.5), vpException);
   EXPECT_THROW(detector.setMaxRadius(2.), vpException);
 }
-
-TEST(Detector, PointSampledApproachFindsTheBigLandmark)
-{
-  // A camera whose pixels sample points (the simulator's tutorials render so, supersampling 1) aliases the rings
-  // thinner than a pixel into a dark cross: B must still be found, in the small-landmark mode, along
-  // tutorial-ssl-auv-driver's approach at 320x240 from 3.7 m (B 7.5 px) to 2 m, the target up to 15 degrees off
-  // the line of sight.
-  const vpCameraParameters cam(277.15, 277.15, 160., 120.); // data/camera/camera-640x480.xml at half resolution
-  vpSSLRenderer renderer(cam, 320, 240);
-  renderer.setTarget(vpSSLTarget::ssl3a3());
-  renderer.setSupersampling(1);
-  vpSSLDetector detector(vpSSLTarget::ssl3a3());
-  detector.setSmallLandmarkMode(true);
-  vpImage<unsigned char> I;
-  for (int step = 0; step <= 34; ++step) {
-    const double Z = 2. + 0.05 * step;
-    for (double yaw : {0., 5., 10., 15.}) {
-      const vpHomogeneousMatrix cMt(0.075 * Z, 0.0375 * Z, Z, 0., vpMath::rad(yaw), 0.);
-      renderer.render(cMt, I);
-      detector.detect(I);
-      EXPECT_NE(detector.getMatchedLandmark(0), nullptr) << "range " << Z << " m, yaw " << yaw << " deg";
-    }
-  }
-}

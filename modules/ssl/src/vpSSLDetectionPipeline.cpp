@@ -78,11 +78,6 @@ const unsigned int kHistogramStep = 4;
 // Smallest correlation of a landmark's ring profile with the square wave s_p (vpSSLConcentricReader::similarity()):
 // sharp landmarks give 0.8-0.9, 25 px ones blurred by 2 px 0.54 and more, bull's-eyes of equal rings 0.46 and less.
 const double kMinSimilarity = 0.5;
-// Largest lead of the equal-width rings' model over the self-similar one (vpSSLConcentricReader::equalRingsMargin())
-// of a landmark kept: a landmark's profile fits its own model about as well or better.
-const double kMinModelMargin = -0.1;
-// Correlation with s_p above which the rings are too sharp for a bull's-eye to pass: the models are not fitted then.
-const double kSharpSimilarity = 0.8;
 // Candidates per frame that vpSSLConcentricReader may read where the rays give up (readAllAround()), and how close
 // (px, in u and in v) a candidate's symmetric centre must be to one read in vain to be skipped.
 const unsigned int kAllAroundBudget = 24;
@@ -438,8 +433,8 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
       // The rays' reading is the more precise; where it cannot follow the rings of a point-symmetric candidate
       // (small, blurred or strongly oblique landmarks), or where what they read does not shrink by p all the way
       // in, the rings are read all around at once.
-      const bool rays = m_radiusEstimator.estimate(*raw, l) && selfSimilar(*raw, l) && notEqualRings(*raw, l);
-      if (!rays && !(readAllAround(*raw, l) && notEqualRings(*raw, l))) {
+      const bool rays = m_radiusEstimator.estimate(*raw, l) && selfSimilar(*raw, l);
+      if (!rays && !readAllAround(*raw, l)) {
         continue;
       }
     }
@@ -489,21 +484,7 @@ bool vpSSLDetectionPipeline::selfSimilar(const vpImage<unsigned char> &raw, cons
   // The rings the rays read must shrink by p all the way in, as far as they are resolved: a bull's-eye of equal
   // rings matches the outer two or three only, and so does a landmark read at R / p where dark surroundings past the
   // white margin continue its pattern on most rays.
-  m_lastSimilarity = m_concentricReader.similarity(raw, l);
-  return m_lastSimilarity >= kMinSimilarity;
-}
-
-bool vpSSLDetectionPipeline::notEqualRings(const vpImage<unsigned char> &raw, const vpSSLLandmark &l)
-{
-  // Blur greys the inner rings of a landmark and of a bull's-eye alike, and the square wave of selfSimilar() then
-  // tells them apart only by the outer two or three rings; the blurred models of both, fitted to the profile, tell
-  // them apart by where their edges lie. Rings sharp enough to follow s_p closely are self-similar as far as they are
-  // resolved (equal rings stay below 0.5): the models, the dearer test, are not fitted then.
-  if (m_lastSimilarity >= kSharpSimilarity) {
-    return true;
-  }
-  // The upsampled image's pixel is half the camera's.
-  return m_concentricReader.equalRingsMargin(raw, l, &raw == &m_upsampled ? 2. : 1.) >= kMinModelMargin;
+  return m_concentricReader.similarity(raw, l) >= kMinSimilarity;
 }
 
 bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
@@ -532,7 +513,6 @@ bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vp
     return false;
   }
   l = c;
-  m_lastSimilarity = m_concentricReader.getSimilarity();
   return true;
 }
 

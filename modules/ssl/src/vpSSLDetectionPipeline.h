@@ -88,8 +88,6 @@ private:
   bool insideFound(double u, double v) const;
   // Whether the ring profile inside \e l's outer ellipse follows s_p (vpSSLConcentricReader::similarity()).
   bool selfSimilar(const vpImage<unsigned char> &raw, const vpSSLLandmark &l);
-  // Whether the rings of \e l are better explained as self-similar than as a bull's-eye of equal rings.
-  bool notEqualRings(const vpImage<unsigned char> &raw, const vpSSLLandmark &l);
   // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
   bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
   // Sets \e map to I's size and to 0 where the last call wrote it.
@@ -120,7 +118,6 @@ private:
   vpSSLConcentricReader m_concentricReader;
   unsigned int m_allAroundLeft = 0;           // candidates vpSSLConcentricReader may still read this frame
   std::vector<vpImagePoint> m_allAroundTried; // centres it read nothing at this frame
-  double m_lastSimilarity = 0.; // correlation with s_p of the last rings read (selfSimilar(), readAllAround())
   vpSSLTargetIdentifier m_identifier;
   bool m_normalize;
   bool m_upsample;

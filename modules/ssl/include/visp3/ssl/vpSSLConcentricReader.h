@@ -62,22 +62,6 @@ public:
   */
   double similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark);
 
-  /*!
-    How much better the self-similar rings explain \e landmark's ring profile than rings of equal width do: the
-    correlation of the profile (averaged around the ellipses of its shape, from \f$ R p^4 \f$ or 1.5 px to just
-    outside its outer ellipse) with blurred self-similar rings minus its correlation with blurred equal-width rings,
-    each the best over the blur, the ring width and an outer radius within 6 % of the landmark's. Blur greys a
-    landmark's inner rings and a bull's-eye's alike, so that both can pass similarity(); modelled with the blur, the two
-    differ in where their edges lie. Near 0 or positive for a landmark, clearly negative (-0.1 and below) for a
-    bull's-eye. 0 where fewer than two periods of rings at least a camera pixel wide lie inside R (R under 13.7
-    camera pixels for p = 0.5): inside those, what the rings look like depends on how the camera samples them, area
-    (grey) or point (aliased), and the landmark is not judged.
-    \param I The camera's grey image, or that image resampled.
-    \param landmark The landmark's outer ellipse (u, v, radius, minorRadius and theta) in \e I.
-    \param pixel Width of a camera pixel in \e I's pixels: 1 on the camera's image, 2 on an image upsampled twice.
-  */
-  double equalRingsMargin(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark, double pixel = 1.);
-
 private:
   struct Fit
   {
@@ -91,7 +75,6 @@ private:
   double band(double tau0, double tau1, int sector) const;
   void allAround(double *level) const;
   double profileSimilarity(const double *level, double tauA, double tR) const;
-  double modelCorrelation(const double *level, const double *rho, int first, int last, double R, double spacing) const;
 
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius
