@@ -18,7 +18,8 @@ namespace ssltut {
 */
 struct ClosedLoopOutputOptions
 {
-  std::string outputDir = ".";            //!< --output-dir: where the files go.
+  //! --output-dir: where the files go; each tutorial sets its own default folder, never the working directory.
+  std::string outputDir;
   unsigned int width = 640, height = 480; //!< --width, --height: the rendered image (px).
   bool small = false;                     //!< --small: 320x240 whatever --width and --height say.
   bool quiet = false;                     //!< --quiet: no progress on stdout.
@@ -26,7 +27,7 @@ struct ClosedLoopOutputOptions
   /*!
     Takes option \e a when it is one of the five, its value from \e value(); false for any other option. The image
     is at least 64x48 and at most \e maxSide on each side.
-    \exception UsageError for a size that is not an integer in that range.
+    \exception UsageError for a size that is not an integer in that range, or an empty --output-dir.
   */
   template <typename Value> bool parseOutputOption(const std::string &a, const Value &value, long long maxSide)
   {
@@ -36,6 +37,9 @@ struct ClosedLoopOutputOptions
       quiet = true;
     } else if (a == "--output-dir") {
       outputDir = value();
+      if (outputDir.empty()) {
+        throw UsageError{"--output-dir: empty folder name"};
+      }
     } else if (a == "--width") {
       width = static_cast<unsigned int>(parseInteger(a, value(), 64, maxSide));
     } else if (a == "--height") {

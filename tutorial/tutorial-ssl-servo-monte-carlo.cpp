@@ -84,7 +84,7 @@ Options:
                        into the current (vpSSLHomingBehaviour::setDockInTransit(); default off).
   --threads T          Runs in parallel (default 2); the results do not depend on it.
   --traces             Also write each run's steps as DIR/run-<i>-<method>.csv (tutorial-ssl-servo's columns).
-  --output-dir DIR     Where runs.csv and summary.md go (default ".", created if needed).
+  --output-dir DIR     Where runs.csv and summary.md go (default monte-carlo-out, created if needed).
   --width W            Image width (camera of data/camera/camera-640x480.xml scaled; default 640).
   --height H           Image height (default 480).
   --small              320 x 240 camera (fast, but ssl3-a3 is then too small to be detected beyond about 3 m).
@@ -100,6 +100,7 @@ collisions_outside_dock, lost_events, final_state, sim_time, start_in_view, fail
 
 struct Options : ssltut::ClosedLoopOutputOptions
 {
+  Options() { outputDir = "monte-carlo-out"; }
   long runs = 20;
   long seed = 1;
   std::vector<vpSSLClosedLoop::Method> methods = {vpSSLClosedLoop::Method::Ssl, vpSSLClosedLoop::Method::AprilTag,

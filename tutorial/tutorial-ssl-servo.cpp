@@ -42,7 +42,7 @@ Options:
                        Default ssl.
   --duration S         Simulated seconds (default: fig7 300, fig8 200, fig9 90, field 120).
   --seed N             Seed of the sensors and the image noise (default 1).
-  --output-dir DIR     Where the CSV and PNG go (default ".", created if needed).
+  --output-dir DIR     Where the CSV and PNG go (default servo-out, created if needed).
   --width W            Image width (camera of data/camera/camera-640x480.xml scaled; default 640).
   --height H           Image height (default 480).
   --small              320 x 240 camera and 1 sample per pixel (fast).
@@ -59,6 +59,7 @@ starboard position in the vehicle frame, measured and true, m; empty when the ta
 
 struct Options : ssltut::ClosedLoopOutputOptions
 {
+  Options() { outputDir = "servo-out"; }
   std::string scenario = "fig7";
   std::string method = "ssl";
   double duration = -1.;

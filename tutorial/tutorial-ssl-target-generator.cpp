@@ -25,6 +25,7 @@
 #include <dlfcn.h>
 
 #include <visp3/core/vpException.h>
+#include <visp3/core/vpIoTools.h>
 #include <visp3/ssl/vpSSLPattern.h>
 #include <visp3/ssl/vpSSLTarget.h>
 
@@ -57,7 +58,8 @@ void printHelp(const char *prog)
             << "Options:\n"
             << "  --target NAME_OR_FILE  built-in target name (ssl3-a3) or a target file (doc/target-file.md).\n"
             << "                         Default: ssl3-a3.\n"
-            << "  --output PREFIX        output files PREFIX.pdf, PREFIX.svg, PREFIX.png.\n"
+            << "  --output PREFIX        output files PREFIX.pdf, PREFIX.svg, PREFIX.png (the folder of PREFIX\n"
+            << "                         is made if it does not exist).\n"
             << "                         Default: the target's name (ssl3-a3), or ssl-linear with --linear.\n"
             << "  --dpi N                resolution of the PNG in dots per inch, 10 to 600; the PNG holds 1 to\n"
             << "                         32767 px a side and at most 2^27 px. Default: 150.\n"
@@ -582,6 +584,11 @@ int main(int argc, char **argv)
       return 2; // a bad option: nothing written
     }
     std::string prefix = opt.output.empty() ? page.name : opt.output;
+    // The folder of the prefix is made if it does not exist yet (vpIoException if it cannot be).
+    const std::string folder = vpIoTools::getParent(prefix);
+    if (!folder.empty() && !vpIoTools::checkDirectory(folder)) {
+      vpIoTools::makeDirectory(folder);
+    }
 
     // Layout once, in sheet units, on a scratch surface; the three outputs then share it.
     cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);

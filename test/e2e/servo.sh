@@ -18,6 +18,12 @@ expect_error 2 "--duration" --duration -3
 expect_error 2 "--duration" --duration abc
 expect_error 2 "needs a value" --seed
 expect_error 2 "--supersampling" --supersampling 0
+expect_error 2 "empty folder" --output-dir ""
+
+# Without --output-dir the files go to servo-out/, not into the working directory.
+(cd "$WORK" && "$BIN" --scenario fig9 --small --duration 1 --quiet > log-default 2>&1) || fail "default output: exit code"
+[ -s "$WORK/servo-out/servo-fig9-ssl.csv" ] && [ ! -e "$WORK/servo-fig9-ssl.csv" ] && pass "default output folder servo-out" ||
+  fail "default output: $(ls "$WORK")"
 
 for method in ssl apriltag; do
   "$BIN" --scenario fig9 --small --duration 20 --method $method --quiet --output-dir "$WORK/out-$method" \

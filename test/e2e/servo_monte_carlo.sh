@@ -20,6 +20,12 @@ expect_error 2 "--methods" --methods ssl,sift
 expect_error 2 "--time-limit" --time-limit -1
 expect_error 2 "needs a value" --seed
 expect_error 2 "--start-range" --start-range 3,2
+expect_error 2 "empty folder" --output-dir ""
+
+# Without --output-dir the files go to monte-carlo-out/, not into the working directory.
+(cd "$WORK" && "$BIN" --runs 1 --methods truth --time-limit 5 --quiet > log-default 2>&1) || fail "default output: exit code"
+[ -s "$WORK/monte-carlo-out/runs.csv" ] && [ ! -e "$WORK/runs.csv" ] && pass "default output folder monte-carlo-out" ||
+  fail "default output: $(ls "$WORK")"
 expect_error 2 "--start-range" --start-range 2
 expect_error 2 "--start-heading" --start-heading 181
 expect_error 2 "--water" --water turbid

@@ -22,6 +22,16 @@ else
   fail "--help exit code $?"
 fi
 
+# An output prefix in folders that do not exist yet: they are made.
+if "$BIN" --dpi 20 --output new/folder/sheet >mk.out 2>mk.err; then
+  for ext in pdf svg png; do
+    [ -s "new/folder/sheet.$ext" ] || fail "new/folder/sheet.$ext not written"
+  done
+  pass "--output into folders that do not exist yet"
+else
+  fail "--output new/folder/sheet: exit code $?: $(cat mk.err)"
+fi
+
 # Default target, PNG at 100 dpi.
 if "$BIN" --dpi 100 >gen.out 2>gen.err; then
   for ext in pdf svg png; do
