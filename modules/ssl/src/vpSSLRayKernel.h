@@ -1,9 +1,9 @@
 /*
   Private interface of the ray reading of vpSSLRadiusEstimator in SIMD: the bilinear samples of a ray, the
   screening of the radius grid by the two outermost ring pairs and the reading of the radii left, implemented with
-  Google Highway in vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of the scalar code they
-  replace, bit for bit (the same double operations in the same order, compiled without contraction into fused
-  multiply-adds): test_ring_kernels.
+  Google Highway in vpSSLRayKernel.cpp and picked at run time for the CPU. They give the values of a plain scalar
+  reference, bit for bit (the same double operations in the same order, compiled without contraction into fused
+  multiply-adds): test_ring_kernels holds that reference and compares.
   Sizes: width and height in int, within the kernels' bound of vpSSLImageCheck (vpSSLRadiusEstimator::estimate()
   checks the image), every sample inside the image.
 */
