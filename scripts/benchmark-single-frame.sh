@@ -20,17 +20,19 @@ detector="${TUTORIAL_DIR:-$VISP_SSL_ROOT/build/tutorial}/tutorial-ssl-detector"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# Work files by position on the command line: two sequences may share a folder name.
+i=0
 for seq in "$@"; do
   [ -f "$seq/frames.csv" ] && [ -d "$seq/images" ] || {
     echo "benchmark-single-frame.sh: $seq: no frames.csv or images/ (doc/sequence-format.md)" >&2
     exit 1
   }
-  name=$(basename "$seq")
-  "$detector" --input "$seq/images/%06d.png" --json --threads 1 --output "$work/$name-annotated" \
-    >"$work/$name.jsonl" 2>"$work/$name.err" || {
-    echo "benchmark-single-frame.sh: $name: $(tail -n 1 "$work/$name.err")" >&2
+  "$detector" --input "$seq/images/%06d.png" --json --threads 1 --output "$work/$i-annotated" \
+    >"$work/$i.jsonl" 2>"$work/$i.err" || {
+    echo "benchmark-single-frame.sh: $seq: $(tail -n 1 "$work/$i.err")" >&2
     exit 1
   }
+  i=$((i + 1))
 done
 
 python3 - "$work" "$@" <<'PY'
@@ -47,10 +49,10 @@ def print_row(label, t):
 total = {"found": 0, "frames": 0, "band": [[0, 0] for _ in bands], "false": 0, "empty": 0}
 print("| sequence | method | rate | " + " | ".join("%d-%d m" % b for b in bands) + " | false det. / frames w/o target |")
 print("|---" * (len(bands) + 4) + "|")
-for seq in seqs:
+for i, seq in enumerate(seqs):
     name = os.path.basename(os.path.normpath(seq))
     found = {}
-    with open(os.path.join(work, name + ".jsonl")) as f:
+    with open(os.path.join(work, "%d.jsonl" % i)) as f:
         for line in f:
             d = json.loads(line)
             found[d["image"]] = bool(d["target"]["found"])
