@@ -106,8 +106,8 @@ private:
   // deferred to the matching (vpSSLRegionPlanner::getPending()).
   void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
   double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
-  // Full search at full resolution: adds the strongest peaks of the short window's map of the normalised image to
-  // m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first.
+  // Full search at full resolution: adds the strongest peaks of the short window's maps of the normalised image and
+  // of its half to m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first.
   void addShortWindowPeaks(const vpImage<unsigned char> &normalized, int mainMax,
                            std::chrono::steady_clock::time_point &t);
 
@@ -150,7 +150,9 @@ private:
   MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
   std::vector<vpSSLPeak> m_peaks;
   std::vector<vpSSLPeak> m_shortPeaks;
-  vpSSLImageBuffer<int> m_shortMap;
+  vpSSLImageBuffer<int> m_shortMap;            // the short window's map of the image
+  vpSSLImageBuffer<unsigned char> m_shortHalf; // the normalised image's half (2x2 averages)
+  vpSSLImageBuffer<int> m_shortHalfMap;        // the short window's map of m_shortHalf
   std::vector<vpSSLLandmark> m_landmarks;
   std::vector<int> m_sweep; // Eq. 7 sweep, reused
   vpSSLTargetMatch m_targetMatch;

@@ -92,9 +92,10 @@ public:
     Short window of a full search (default 10; 0: none). The matching function's response to a landmark fades once
     the window exceeds about 1.4 times its apparent radius, so w = 40 gives no peak at the centre of landmarks under
     about 28 px. A full search at full resolution (setDecimation(1), not the small-landmark mode) also matches the
-    normalised image with this window, from 7 px of radius up for w = 10, at a quarter of the cost of w = 40, and
-    reads the 16 strongest peaks of that map with those of w = 40, strongest first (the scores of both maps on the
-    same scale). Tracking frames (setRegionsOfInterest()) use w alone.
+    normalised image and its half (2x2 averages) with this window: w and 2 w in image pixels, from 7 px of radius up
+    for w = 10, at 1.25 times a quarter of the cost of w = 40. It reads the 16 strongest peaks of each of these maps
+    with those of w = 40, strongest first (the scores of all maps on the same scale). Tracking frames
+    (setRegionsOfInterest()) use w alone.
     \exception vpException unless 0 or in [2, 128].
   */
   void setShortWindow(unsigned int w);
