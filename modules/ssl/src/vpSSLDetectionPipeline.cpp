@@ -449,32 +449,33 @@ void vpSSLDetectionPipeline::addShortWindowPeaks(const vpImage<unsigned char> &n
   // The short window on the image and on its half: w and 2 w in image pixels. w = 40 and w = 10 alone leave a gap
   // at radii of 12-20 px, where the response of either is weak (it fades once the window exceeds about 1.4 R, and
   // a window much shorter than R sees only the innermost rings, the most blurred); the half image fills it for a
-  // quarter of the cost of another full-resolution map.
+  // quarter of the cost of the image's short-window map.
   const int shortMax = m_matchShort.getMaxValue();
   m_shortPeakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * shortMax))));
-  m_matchShort.compute(normalized, m_shortMap);
-  m_times.matching += elapsedMs(t);
-  m_shortPeakDetector.detect(m_shortMap, m_shortPeaks, m_noRois);
   // One scale for every map's peaks: the score (Eq. 5) over its largest value. A landmark big enough for several
-  // windows gives a peak in each; the later ones are skipped as inside the first one read.
-  for (vpSSLPeak p : m_shortPeaks) {
-    p.value = static_cast<int>(static_cast<long long>(p.value) * mainMax / shortMax);
-    m_peaks.push_back(p);
-  }
+  // windows gives a peak in each; the later ones are skipped as inside the first one read. Pixel j of the half image
+  // is centred on pixel 2 j + 0.5 of the image.
+  auto addPeaks = [&](const vpImage<int> &map, bool half) {
+    m_times.matching += elapsedMs(t);
+    m_shortPeakDetector.detect(map, m_shortPeaks, m_noRois);
+    for (vpSSLPeak p : m_shortPeaks) {
+      p.value = static_cast<int>(static_cast<long long>(p.value) * mainMax / shortMax);
+      if (half) {
+        p.u = 2. * p.u + 0.5;
+        p.v = 2. * p.v + 0.5;
+      }
+      m_peaks.push_back(p);
+    }
+    m_times.peaks += elapsedMs(t);
+  };
+  m_matchShort.compute(normalized, m_shortMap);
+  addPeaks(m_shortMap, false);
   const int Wh = static_cast<int>(normalized.getWidth() / 2), Hh = static_cast<int>(normalized.getHeight() / 2);
   if (Wh > 0 && Hh > 0) {
     m_shortHalf.resize(static_cast<unsigned int>(Hh), static_cast<unsigned int>(Wh));
     decimate2(normalized, nullptr, 0, 0, Wh, Hh, m_shortHalf);
     m_matchShort.compute(m_shortHalf, m_shortHalfMap);
-    m_times.matching += elapsedMs(t);
-    m_shortPeakDetector.detect(m_shortHalfMap, m_shortPeaks, m_noRois);
-    // Pixel j of the half image is centred on pixel 2 j + 0.5 of the image.
-    for (vpSSLPeak p : m_shortPeaks) {
-      p.value = static_cast<int>(static_cast<long long>(p.value) * mainMax / shortMax);
-      p.u = 2. * p.u + 0.5;
-      p.v = 2. * p.v + 0.5;
-      m_peaks.push_back(p);
-    }
+    addPeaks(m_shortHalfMap, true);
   }
   // Strongest first, ties in row-major order: std::sort allocates nothing, and the order is total.
   std::sort(m_peaks.begin(), m_peaks.end(), [](const vpSSLPeak &a, const vpSSLPeak &b) {
