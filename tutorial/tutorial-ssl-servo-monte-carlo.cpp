@@ -74,14 +74,15 @@ Options:
   --max-current V      Largest current drawn (m/s, default 0.1; 0: still water).
   --dock-hold S,M,DEG  Auto-dock after S seconds in HOME within M metres of the stand-off and DEG degrees of
                        the optical axis (default 10,0.5,15; fig9 of tutorial-ssl-servo uses 10,0.1,5).
-  --station-keeping    The behaviour gets the odometry: SEARCH holds its ground in front of where the target was
-                       last seen (vpSSLHomingBehaviour::setSearchHold()), and HOME integrates the range error
-                       (setRangeIntegralGain(0.05)), so that a current neither carries the vehicle off while it
-                       searches nor holds it short of the stand-off (default off: the behaviour of
-                       tutorial-ssl-servo).
-  --dock-in-transit    The behaviour gets the odometry, estimates the current from it and, when the current
-                       across the line of sight reaches 0.1 m/s, docks without holding the stand-off, crabbing
-                       into the current (vpSSLHomingBehaviour::setDockInTransit(); default off).
+  --station-keeping    On by default. The behaviour gets the odometry: SEARCH holds its ground in front of where
+                       the target was last seen (vpSSLHomingBehaviour::setSearchHold()), and HOME integrates the
+                       range error (setRangeIntegralGain(0.05)), so that a current neither carries the vehicle off
+                       while it searches nor holds it short of the stand-off.
+  --no-station-keeping Without it: the behaviour of tutorial-ssl-servo's scenarios (no odometry).
+  --dock-in-transit    On by default. The behaviour gets the odometry, estimates the current from it and, when the
+                       current across the line of sight reaches 0.1 m/s, docks without holding the stand-off,
+                       crabbing into the current (vpSSLHomingBehaviour::setDockInTransit()).
+  --no-dock-in-transit Without it: the stand-off is always held before docking.
   --threads T          Runs in parallel (default 2); the results do not depend on it.
   --traces             Also write each run's steps as DIR/run-<i>-<method>.csv (tutorial-ssl-servo's columns).
   --output-dir DIR     Where runs.csv and summary.md go (default monte-carlo-out, created if needed).
@@ -111,8 +112,8 @@ struct Options : ssltut::ClosedLoopOutputOptions
   std::string water = "mixed";
   double maxCurrent = 0.1;
   double dockHold = 10., dockRange = 0.5, dockAngle = 15.;
-  bool stationKeeping = false;
-  bool dockInTransit = false;
+  bool stationKeeping = true;
+  bool dockInTransit = true;
   long threads = 2;
   bool traces = false;
 };
@@ -193,8 +194,12 @@ bool parse(int argc, char **argv, Options &o)
       o.traces = true;
     } else if (a == "--station-keeping") {
       o.stationKeeping = true;
+    } else if (a == "--no-station-keeping") {
+      o.stationKeeping = false;
     } else if (a == "--dock-in-transit") {
       o.dockInTransit = true;
+    } else if (a == "--no-dock-in-transit") {
+      o.dockInTransit = false;
     } else if (a == "--threads") {
       o.threads = ssltut::parseThreads(a, value(), false, 64);
     } else if (o.parseOutputOption(a, value, 10000)) {
@@ -557,8 +562,8 @@ static int run(int argc, char **argv)
      << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
      << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
      << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
-     << (opt.stationKeeping ? ", station keeping on the odometry" : "")
-     << (opt.dockInTransit ? ", docking in transit across a current" : "") << "\n\n";
+     << (opt.stationKeeping ? ", station keeping on the odometry" : ", no station keeping")
+     << (opt.dockInTransit ? ", docking in transit across a current" : ", no docking in transit") << "\n\n";
   md << "| method | water | docked | success | stand-off RMS median (m) | p90 (m) | runs settled | time to dock "
         "median (s) | p90 (s) | first detection median (s) | runs detecting | collisions outside DOCK | "
         "lost-target events |";

@@ -9,7 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo-monte-car
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --runs --seed --methods --time-limit --max-current --threads --traces --output-dir --width --height \
-           --small --quiet --help --start-range --start-heading --water --station-keeping --dock-in-transit ssl apriltag truth ssl-raw apriltag-raw \
+           --small --quiet --help --start-range --start-heading --water --station-keeping --dock-in-transit --no-station-keeping --no-dock-in-transit ssl apriltag truth ssl-raw apriltag-raw \
            runs.csv summary.md outcomes.png never-found lost hold-not-reached missed-board collision time-out; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
@@ -56,8 +56,16 @@ for threads in 1 2; do
 done
 cmp -s "$WORK/out-1/runs.csv" "$WORK/out-2/runs.csv" || fail "runs.csv differs between 1 and 2 threads"
 cmp -s "$WORK/out-1/summary.md" "$WORK/out-2/summary.md" || fail "summary.md differs between 1 and 2 threads"
+# Station keeping and docking in transit are the defaults; the summary says which behaviour ran.
+grep -q "station keeping on the odometry, docking in transit across a current" "$WORK/out-1/summary.md" ||
+  fail "summary.md does not say the default behaviour: $(head -1 "$WORK/out-1/summary.md")"
+"$BIN" --runs 1 --methods truth --time-limit 5 --no-station-keeping --no-dock-in-transit --quiet \
+  --output-dir "$WORK/no-odometry" > /dev/null 2> "$WORK/err" || fail "--no-station-keeping run: $(cat "$WORK/err")"
+grep -q "no station keeping, no docking in transit" "$WORK/no-odometry/summary.md" ||
+  fail "summary.md does not say --no-station-keeping --no-dock-in-transit: $(head -1 "$WORK/no-odometry/summary.md")"
 # The whole mission on a short fixed-seed run (320x240, clear still water, starts 2-2.5 m with the target out of
-# view): each method must find the target by searching and dock in both runs (measured: 2/2 each).
+# view, the default behaviour): each method must find the target by searching and dock in both runs (measured: 2/2
+# each).
 out="$WORK/mission"
 "$BIN" --runs 2 --seed 3 --methods ssl,apriltag,truth --small --start-range 2,2.5 --water clear --max-current 0 \
   --time-limit 90 --threads 2 --quiet --output-dir "$out" > "$WORK/log-mission" 2> "$WORK/err" \
@@ -69,8 +77,12 @@ awk -F, 'NR > 1 && $17 + 0 <= 0 { exit 1 }' "$out/runs.csv" || fail "a target se
 # Docking in transit with the perfect sensor, currents to 0.2 m/s: 4/4 docked (3/4 with station keeping alone,
 # one run never holding the stand-off: measured).
 out="$WORK/transit"
-"$BIN" --runs 4 --methods truth --max-current 0.2 --station-keeping --dock-in-transit --time-limit 120 --threads 2 \
+"$BIN" --runs 4 --methods truth --max-current 0.2 --time-limit 120 --threads 2 \
   --quiet --output-dir "$out" > "$WORK/log-transit" 2> "$WORK/err" || fail "transit run exit code $?: $(cat "$WORK/err")"
 grep -q "docking in transit across a current" "$out/summary.md" || fail "summary.md does not say docking in transit"
 grep -q "^| truth | all | 4/4 | " "$out/summary.md" || fail "transit: truth did not dock 4/4: $(cat "$out/summary.md")"
+out="$WORK/no-transit"
+"$BIN" --runs 4 --methods truth --max-current 0.2 --no-dock-in-transit --time-limit 120 --threads 2 \
+  --quiet --output-dir "$out" > /dev/null 2> "$WORK/err" || fail "no-transit run exit code $?: $(cat "$WORK/err")"
+grep -q "^| truth | all | 3/4 | " "$out/summary.md" || fail "station keeping alone: expected 3/4: $(cat "$out/summary.md")"
 e2e_finish
