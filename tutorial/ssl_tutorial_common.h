@@ -14,7 +14,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -52,6 +54,62 @@ template <typename Run> int guardedMain(const char *program, Run run)
     std::cerr << program << ": unknown error" << std::endl;
   }
   return 1;
+}
+
+/*!
+  The recorded sequence folder (doc/sequence-format.md: a folder holding sequence.json and frames.csv) that is
+  \e path or holds it, after resolving "..", symbolic links and the working folder; an empty string when there is
+  none. A tutorial writes nothing inside a sequence: its files are a user's recording, read, never written.
+*/
+inline std::string enclosingSequence(const std::string &path)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::absolute(path, ec);
+  if (ec) {
+    return std::string();
+  }
+  p = fs::weakly_canonical(p, ec);
+  if (ec) {
+    return std::string();
+  }
+  for (;;) {
+    if (fs::is_regular_file(p / "sequence.json", ec) && fs::is_regular_file(p / "frames.csv", ec)) {
+      return p.string();
+    }
+    if (!p.has_relative_path()) {
+      return std::string();
+    }
+    p = p.parent_path();
+  }
+}
+
+/*!
+  Throws a UsageError when the output \e path of \e option lies inside a recorded sequence (enclosingSequence()):
+  "OPTION: PATH is inside the recorded sequence SEQ, which is read, never written: choose a place outside it".
+*/
+inline void checkOutsideSequences(const std::string &option, const std::string &path)
+{
+  const std::string sequence = enclosingSequence(path);
+  if (!sequence.empty()) {
+    throw UsageError(option + ": " + path + " is inside the recorded sequence " + sequence +
+                     ", which is read, never written: choose a place outside it");
+  }
+}
+
+/*!
+  Throws a UsageError when the output \e path of \e option is one of the files in \e inputs (the same file, whatever
+  the path that names it): "OPTION: PATH is the input FILE, which is read, never written".
+*/
+inline void checkNotAnInput(const std::string &option, const std::string &path,
+                            std::initializer_list<std::string> inputs)
+{
+  std::error_code ec;
+  for (const std::string &input : inputs) {
+    if (!input.empty() && std::filesystem::equivalent(path, input, ec)) {
+      throw UsageError(option + ": " + path + " is the input " + input + ", which is read, never written");
+    }
+  }
 }
 
 /*!

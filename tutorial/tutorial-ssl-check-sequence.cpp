@@ -12,9 +12,9 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
-#include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLTarget.h>
 #include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 #include <visp3/ssl_io/vpSSLSequenceFrame.h>
 #include <visp3/ssl_io/vpSSLSequenceInfo.h>
 #include <visp3/ssl_io/vpSSLSequenceReader.h>
@@ -240,9 +240,9 @@ private:
       } else if (target == "ssl3-a3") {
         vpSSLTarget::fromName(target);
       } else {
-        std::error_code ec;
-        const std::string beside = path(target);
-        vpSSLTarget::load(fs::exists(target, ec) || !fs::exists(beside, ec) ? target : beside);
+        // A relative path is resolved against the sequence folder, never the working folder, as every reader of
+        // the sequence resolves it.
+        vpSSLTarget::load(fs::path(target).is_absolute() ? target : path(target));
       }
     } catch (const vpException &e) {
       problem(file, line, "target",
@@ -264,6 +264,14 @@ private:
     if (line.compare(0, 3, "\xEF\xBB\xBF") == 0) {
       line.erase(0, 3);
     }
+    // Lines end in LF or CRLF: a file with CR alone is one line to every reader of the format.
+    const size_t cr = line.find('\r');
+    if (cr != std::string::npos && cr + 1 != line.size()) {
+      problem(file, 1, "line end",
+              "a carriage return inside the line: lines must end in LF or CRLF, not CR alone (convert the file, e.g. "
+              "with tr '\\r' '\\n')");
+      return;
+    }
     if (!checkHeader(file, line, cells)) {
       problem(file, 1, "header", "rows not checked (their columns are unknown)");
       return;
@@ -276,6 +284,10 @@ private:
       ++lineNumber;
       if (!line.empty() && line.back() == '\r') {
         line.pop_back();
+      }
+      if (line.find('\r') != std::string::npos) {
+        problem(file, lineNumber, "line end", "a carriage return inside the line: lines must end in LF or CRLF");
+        continue;
       }
       if (line.empty()) {
         emptyLine = emptyLine == 0 ? lineNumber : emptyLine;
@@ -436,7 +448,8 @@ private:
     }
     vpImage<unsigned char> I;
     try {
-      vpImageIo::read(I, path(found));
+      // The header's size is checked against the image limits before anything is decoded.
+      vpSSLImageIo::read(I, path(found));
     } catch (const vpException &e) {
       problem(file, lineNumber, "image", found + ": cannot be read (" + e.getStringMessage() + ")");
       return;

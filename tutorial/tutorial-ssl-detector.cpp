@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -45,7 +46,8 @@ Options:
   --json              Print one JSON object per image on standard output (JSON Lines,
                       doc/detection-json.md); everything else goes to stderr.
   --output DIR        Write annotated images DIR/<image name>.png (default when no window
-                      is shown: ssl-detections; DIR must not be an existing file).
+                      is shown: ssl-detections; DIR must not be an existing file, the
+                      input images' folder or inside a recorded sequence).
                       Outlines: B green, S1 cyan, S2 purple, landmarks outside the target
                       orange; red crosses at the centres.
   --display           Show the detections in a window (needs an X display; without one, a
@@ -265,6 +267,13 @@ int run(int argc, char **argv)
   }
   // Nothing a user gave is overwritten: an existing file is not turned into a folder, nor written into.
   if (!outputDir.empty()) {
+    // Annotated images are named after the input images: in the inputs' own folder they would replace them.
+    ssltut::checkOutsideSequences("--output", outputDir);
+    std::error_code ec;
+    const std::filesystem::path inputFolder = std::filesystem::path(input).parent_path();
+    if (!isVideo && std::filesystem::equivalent(outputDir, inputFolder.empty() ? "." : inputFolder, ec)) {
+      fail("--output: " + outputDir + " is the folder of the input images: the annotated images would replace them", 2);
+    }
     if (vpIoTools::checkFilename(outputDir) && !vpIoTools::checkDirectory(outputDir)) {
       fail("--output: " + outputDir + ": exists and is not a folder", 2);
     }

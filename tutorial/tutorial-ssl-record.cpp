@@ -5,15 +5,20 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
 #include <visp3/core/vpImageConvert.h>
+#include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl_io/vpSSLCameraFile.h>
+#include <visp3/ssl_io/vpSSLImageIo.h>
 #include <visp3/ssl_io/vpSSLOdometryTrack.h>
 #include <visp3/ssl_io/vpSSLSequenceWriter.h>
 
@@ -181,9 +186,20 @@ int run(int argc, char **argv)
       std::error_code ec;
       got = std::filesystem::is_regular_file(path, ec);
       if (got) {
-        image = cv::imread(path, cv::IMREAD_ANYCOLOR);
+        // The file's header, size and data are checked as every reader of the plugin checks them (vpSSLImageIo)
+        // before OpenCV decodes it, in colour when it is: the size first, before the file is read into memory.
+        uint64_t headerWidth = 0, headerHeight = 0;
+        const std::string format = vpSSLImageIo::readHeader(path, headerWidth, headerHeight);
+        vpSSLInputLimits::checkImageSize(headerWidth, headerHeight, path + ": " + format + " header");
+        std::ifstream in(path, std::ios::binary);
+        const std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (!in.eof() && in.fail()) {
+          throw vpException(vpException::ioError, "%s: cannot read the file", path.c_str());
+        }
+        vpSSLImageIo::checkData(data, path);
+        image = cv::imdecode(data, cv::IMREAD_ANYCOLOR);
         if (image.empty()) {
-          throw vpException(vpException::ioError, "%s: cannot read the image", path.c_str());
+          throw vpException(vpException::ioError, "%s: cannot decode the image", path.c_str());
         }
       }
     } else {

@@ -53,11 +53,12 @@ Options:
                         single-frame hypothesis of the same image: its kind full|position, its
                         position and angle errors; for a position-only hypothesis the position
                         error is that of the landmark centre it holds, and it has no angle).
-                        Empty cells where a value does not exist.
+                        Empty cells where a value does not exist. Never inside a recorded
+                        sequence, never the video, camera or target file (exit status 2).
   --output-dir DIR      Write an annotated image DIR/<frame>.png per frame: projected landmark
                         circles from the estimated pose (green tracking, yellow acquired, red lost),
                         the target frame axes, detected centres (cyan crosses), regions of
-                        interest (blue), the state.
+                        interest (blue), the state. Never inside a recorded sequence.
   --display             Show the annotated images in a window (needs an X display; without one,
                         a one-line notice and the annotated images go to DIR of --output-dir,
                         default ssl-tracker).
@@ -257,6 +258,15 @@ int run(int argc, char **argv)
   }
   if (!csvSet && !outputDir.empty()) {
     csvPath = outputDir + "/ssl-tracker.csv"; // beside the annotated images, never over a file in the current folder
+  }
+  // Nothing the tracker reads is written over: not a recorded sequence, not the video or the camera file.
+  if (!csvPath.empty() && csvPath != "-") {
+    const std::string csvOption = csvSet ? "--csv" : "--output-dir";
+    ssltut::checkOutsideSequences(csvOption, csvPath);
+    ssltut::checkNotAnInput(csvOption, csvPath, {videoPath, camera.cameraFile, camera.targetName});
+  }
+  if (!outputDir.empty()) {
+    ssltut::checkOutsideSequences("--output-dir", outputDir);
   }
 
   vpSSLSequenceReader reader;

@@ -52,7 +52,8 @@ sequence and per method), DIR/frames.csv (one row per frame and method), DIR/rat
 and DIR/pose_error_vs_range.png (one line per method and water preset).
 
 Options:
-  --output-dir DIR      Where to write the files (default: ssl-vs-apriltag).
+  --output-dir DIR      Where to write the files (default: ssl-vs-apriltag; never inside a
+                        recorded sequence).
   --max-frames N        Use at most the first N frames of each sequence, 1 to 1000000000
                         (default: all).
   --bin W               Range bin of the plots and of range90 (m, 0.01 to 100, default 0.5).
@@ -490,6 +491,8 @@ int run(int argc, char **argv)
     const size_t n = countFrames(s);
     total += (opt.maxFrames > 0 && n > opt.maxFrames) ? opt.maxFrames : n;
   }
+  // The files it writes (frames.csv among them) never go into a recorded sequence, the inputs included.
+  ssltut::checkOutsideSequences("--output-dir", opt.outputDir);
   try {
     vpIoTools::makeDirectory(opt.outputDir);
   } catch (const vpException &e) {

@@ -51,6 +51,8 @@ trk="$T/tutorial-ssl-tracker"
 vs="$T/tutorial-ssl-vs-apriltag"
 sim="$T/tutorial-ssl-simulate-sequence"
 gen="$T/tutorial-ssl-target-generator"
+chk="$T/tutorial-ssl-check-sequence"
+rec="$T/tutorial-ssl-record"
 img="$D/images/ssl3-a3-00.png"
 
 # 1. An image whose width x height wraps vpImage's 32-bit size.
@@ -187,5 +189,64 @@ expect 2 "vpSSLBackground: cannot read image t.png: t.png: PNG data truncated" "
 # 18. "+-0.1" is not a number.
 printf 'name t\nlandmark A +-0.1 0 0 0.1\n' >pm.txt
 expect 2 "pm.txt:2: x: not a number: \"\+-0.1\"" "$gen" --target pm.txt --output g
+
+# Nothing a user gave is written over: no output inside a recorded sequence (the input or another one), none onto an
+# input file, no annotated image over the image it annotates.
+mkseq s6
+cp s6/frames.csv frames.keep
+expect 2 "^tutorial-ssl-tracker: --csv: s6/frames.csv is inside the recorded sequence .*/s6, which is read, never written" \
+  "$trk" --sequence s6 --csv s6/frames.csv --quiet
+expect 2 "--output-dir: s6/images is inside the recorded sequence" \
+  "$trk" --sequence "$D/sequences/approach-clear" --output-dir s6/images --max-frames 1 --csv z.csv
+expect 2 "--output-dir: s6 is inside the recorded sequence" "$vs" --quiet --output-dir s6 s6
+expect 2 "--output: s6/images is inside the recorded sequence" "$det" --input s6/images/000000.png --output s6/images
+cmp -s s6/frames.csv frames.keep || fail "the sequence's frames.csv was written over"
+cmp -s s6/images/000000.png "$D/sequences/approach-clear/images/000000.png" || fail "a sequence image was written over"
+[ ! -e z.csv ] || fail "a refused run wrote z.csv"
+mkdir -p photos
+cp "$img" photos/
+expect 2 "--output: photos is the folder of the input images: the annotated images would replace them" \
+  "$det" --input photos/ssl3-a3-00.png --output photos
+cmp -s photos/ssl3-a3-00.png "$img" || fail "the detector wrote over its input image"
+cp "$D/camera/camera-640x480.xml" cam.xml
+expect 2 "--csv: cam.xml is the input cam.xml, which is read, never written" \
+  "$trk" --sequence s6 --camera cam.xml --csv cam.xml
+cmp -s cam.xml "$D/camera/camera-640x480.xml" || fail "the tracker wrote over the camera file"
+
+# 1, 2, 12, 17 in the sequence checker and the recorder: images go through the same checked reader (header size
+# before decoding, truncated data named, nothing printed by libpng).
+for f in lie big t; do
+  mkseq c$f
+  cp $f.png c$f/images/000001.png
+  expect 1 "" "$chk" c$f
+  [ ! -s "$work/_stderr" ] || fail "check-sequence on $f.png: stray stderr: $(cat "$work/_stderr")"
+done
+grep -q "^ct/frames.csv:3: image: images/000001.png: cannot be read (ct/images/000001.png: PNG data truncated" \
+  "$work/_stdout" || fail "check-sequence, truncated PNG: $(cat "$work/_stdout")"
+"$chk" clie | grep -q "clie/images/000001.png: PNG header: 65536 x 65537 pixels: a side exceeds the limit" ||
+  fail "check-sequence, a PNG header beyond the limits"
+"$chk" cbig | grep -q "cbig/images/000001.png: PNG header: 20000 x 20000 pixels" ||
+  fail "check-sequence, a 20000 x 20000 PNG header"
+for f in lie t; do
+  rm -rf rin rout
+  mkdir rin
+  cp $f.png rin/000000.png
+  expect 1 "^tutorial-ssl-record: rin/000000.png: PNG (header: 65536 x 65537 pixels|data truncated)" \
+    "$rec" --input rin/%06d.png --camera "$D/camera/camera-640x480.xml" --output rout --rate 10
+  [ "$(wc -l <"$work/_stderr")" -eq 1 ] || fail "record on $f.png: expected one line: $(cat "$work/_stderr")"
+done
+# 18 in the sequence checker: CR-only line ends named; a relative target is the sequence folder's, as in the
+# tracker (a valid target of that name in the working folder changes nothing).
+mkseq ccr
+head -n 3 "$D/sequences/approach-clear/frames.csv" | tr '\n' '\r' >ccr/frames.csv
+expect 1 "" "$chk" ccr
+grep -q "^ccr/frames.csv:1: line end: a carriage return inside the line" "$work/_stdout" ||
+  fail "check-sequence, CR line ends: $(cat "$work/_stdout")"
+mkseq crel
+printf 'name t\nlandmark A 0 0 0 0.1 0.5\nlandmark B 0.3 0 0 0.1 0.4\n' >crel/rel.txt
+sed -i 's#"ssl3-a3"#"rel.txt"#' crel/sequence.json
+cp "$D/targets/ssl3-a3.txt" rel.txt
+expect 1 "" "$chk" crel
+grep -q "crel/rel.txt:3: p: 0.4 differs from 0.5" "$work/_stdout" || fail "check-sequence, relative target: $(cat "$work/_stdout")"
 
 echo "hostile_input: all checks passed"
