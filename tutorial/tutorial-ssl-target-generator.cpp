@@ -577,10 +577,10 @@ int main(int argc, char **argv)
       int pw = 0, ph = 0;
       pngSize(page, opt.dpi, pw, ph); // before anything is written
     } catch (const vpException &e) {
-      std::cerr << "error: " << e.getStringMessage() << std::endl;
+      std::cerr << "tutorial-ssl-target-generator: " << e.getStringMessage() << std::endl;
       return 2; // a bad target file: nothing written
     } catch (const std::runtime_error &e) {
-      std::cerr << "error: " << e.what() << std::endl;
+      std::cerr << "tutorial-ssl-target-generator: " << e.what() << std::endl;
       return 2; // a bad option: nothing written
     }
     std::string prefix = opt.output.empty() ? page.name : opt.output;
@@ -617,18 +617,18 @@ int main(int argc, char **argv)
                 << std::endl;
     }
   } catch (const vpException &e) {
-    std::cerr << "error: " << e.getStringMessage() << std::endl;
+    std::cerr << "tutorial-ssl-target-generator: " << e.getStringMessage() << std::endl;
     return 1;
   } catch (const std::exception &e) {
-    std::cerr << "error: " << e.what() << std::endl;
+    std::cerr << "tutorial-ssl-target-generator: " << e.what() << std::endl;
     return 1;
   } catch (...) {
-    std::cerr << "error: unknown error" << std::endl;
+    std::cerr << "tutorial-ssl-target-generator: unknown error" << std::endl;
     return 1;
   }
   std::cout.flush();
   if (!std::cout) {
-    std::cerr << "error: standard output: write error" << std::endl;
+    std::cerr << "tutorial-ssl-target-generator: standard output: write error" << std::endl;
     return 1;
   }
   return 0;

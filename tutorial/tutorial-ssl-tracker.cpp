@@ -506,8 +506,9 @@ int run(int argc, char **argv)
       ssltut::finishStream(csv, csvToStdout ? std::string("standard output") : csvPath);
     }
   } catch (const vpException &e) {
+    // One line: no summary that would name the CSV as written.
     std::cerr << "tutorial-ssl-tracker: " << e.getStringMessage() << std::endl;
-    status = 1;
+    return 1;
   }
   std::cerr << "tutorial-ssl-tracker: " << nbFrames << " frame(s), tracking in " << nbTracking
             << (csvToStdout || csvPath.empty() ? std::string() : ", CSV in " + csvPath)

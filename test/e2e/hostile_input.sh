@@ -163,21 +163,24 @@ expect 2 "s2/frames.csv: frame 1: range: 1e\+13 m, beyond the 1000 m" "$vs" --qu
 # 16. Output to a full device is an error.
 if [ -w /dev/full ]; then
   expect 1 "/dev/full: write error" "$trk" --sequence "$D/sequences/approach-clear" --csv /dev/full --quiet --max-frames 2
+  [ "$(wc -l <"$work/_stderr")" -eq 1 ] || fail "tracker to a full device: expected one line: $(cat "$work/_stderr")"
   timeout 120 "$vs" --quiet --max-frames 2 --output-dir vs4 "$D/sequences/approach-clear" >/dev/full 2>err
   [ $? -eq 1 ] || fail "vs-apriltag to a full device: exit status"
   grep -q "standard output: write error" err || fail "vs-apriltag to a full device: message"
 fi
 
 # 8. A camera of 4294967295 or 20000 x 20000 pixels for the simulator.
-sed 's#<image_width>640#<image_width>4294967295#' "$D/camera/camera-640x480.xml" >huge.xml
-expect 2 "4294967295 x 480 pixels: a side exceeds the limit of 16384" "$sim" --output s3 --camera huge.xml --frames 1
+sed 's#<image_width>640#<image_width>4294967296#' "$D/camera/camera-640x480.xml" >huge.xml
+expect 2 "image_width: 4294967296 pixels: a side exceeds the limit of 16384" "$sim" --output s3 --camera huge.xml --frames 1
+sed 's#<image_width>640#<image_width>20000#; s#<image_height>480#<image_height>20000#' "$D/camera/camera-640x480.xml" >huge.xml
+expect 2 "20000 x 20000 pixels: a side exceeds the limit of 16384" "$sim" --output s3 --camera huge.xml --frames 1
 # 9. P = 0.99999999; 11. 20,000 landmarks; 13. a landmark at 1.7e308 m.
 printf 'name t\nlandmark A 0 0 0 0.1 0.99999999\n' >p.txt
 expect 2 "p.txt:2: p: must be in \[0.2, 0.8\], got 0.99999999" "$sim" --output s4 --target p.txt --frames 1
 python3 -c "
 print('name t')
 for i in range(20000): print('landmark L%d %g 0 0 0.001' % (i, i * 0.003 - 30))" >many.txt
-expect 2 "many.txt:66: landmark: more than 64 landmarks" "$gen" --target many.txt --output g
+expect 2 "^tutorial-ssl-target-generator: many.txt:66: landmark: more than 64 landmarks" "$gen" --target many.txt --output g
 printf 'name t\nlandmark B 1.7e308 0 0 1e308\n' >h.txt
 expect 2 "h.txt:2: centre: each coordinate must be within" "$gen" --target h.txt --output g
 # 10. A 100 m sheet: bounded layout and a clear PNG size error, nothing written.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include <visp3/core/vpException.h>
@@ -136,9 +137,16 @@ vpCameraParameters vpSSLCameraFile::load(const std::string &filename, const std:
     for (const auto &side : sides) {
       std::string stated;
       const std::string tag = std::string("<") + side.first + ">";
-      if (side.second == 0 && camera != std::string::npos && text.find(tag, camera) < text.find("</camera>", camera) &&
-          tagText(text, side.first, camera, stated)) {
+      const bool isStated = camera != std::string::npos && text.find(tag, camera) < text.find("</camera>", camera) &&
+                            tagText(text, side.first, camera, stated);
+      if (side.second == 0 && isStated) {
         throw vpException(vpException::badValue, where + ": " + side.first + ": must be > 0, got \"" + stated + "\"");
+      }
+      // vpXmlParserCamera saturates a side of 2^32 - 1 or more to 2^32 - 1: the message gives the file's own text.
+      if (isStated && side.second == std::numeric_limits<unsigned int>::max()) {
+        throw vpException(vpException::badValue, where + ": " + side.first + ": " + stated +
+                                                     " pixels: a side exceeds the limit of " +
+                                                     std::to_string(vpSSLInputLimits::maxImageSide()) + " pixels");
       }
     }
     if ((w == 0) != (h == 0)) {
