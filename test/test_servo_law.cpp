@@ -418,6 +418,50 @@ TEST(ServoLaw, DockingWithStandOffZeroClosesTheRange)
             << std::endl;
 }
 
+TEST(ServoLaw, HeavePitchIsTheOnlyDirectionBelowThePseudoInverseThreshold)
+{
+  // doc/servo.md, "Conditioning": the target centred and facing the camera, Starbug axes, forward camera. The
+  // singular values of L cVe eJe over the largest (yaw), each told by the axis its right singular vector turns:
+  // heave with pitch 2.6e-4 at 2 m and 5.4e-5 at 4 m (below the threshold 0.005: dropped); roll, the weakest
+  // direction kept, 0.012 and 0.0069; the range (surge) 0.23 and 0.13.
+  struct Expected
+  {
+    double Z, heavePitch, roll, surge;
+  };
+  const std::vector<vpPoint> points = vpSSLTarget::ssl3a3().getPoints();
+  for (const Expected &e : {Expected{2., 2.6e-4, 0.012, 0.23}, Expected{4., 5.4e-5, 0.0069, 0.13}}) {
+    vpSSLServoLaw law;
+    law.setCameraToVehicle(vpSSLServoLaw::forwardCameraMount(0.5));
+    law.setStandOff(2.);
+    law.computeControlLaw(vpSSLServoInput::fromPose(points, startPose({0., 0., e.Z, 0., 0., 0.})));
+    ASSERT_EQ(law.getStatus(), SSL_SERVO_OK);
+    vpMatrix J = law.getTaskJacobian(), V;
+    ASSERT_EQ(J.getCols(), 5u); // surge, heave, roll, pitch, yaw
+    vpColVector sv;
+    J.svd(sv, V);
+    const double largest = sv.getMaxValue();
+    // Each singular value under the axis with the largest share of its right singular vector (heave and pitch
+    // share the smallest one).
+    double byAxis[5] = {0., 0., 0., 0., 0.};
+    for (unsigned int k = 0; k < sv.size(); ++k) {
+      unsigned int axis = 0;
+      for (unsigned int a = 1; a < 5; ++a) {
+        axis = std::fabs(V[a][k]) > std::fabs(V[axis][k]) ? a : axis;
+      }
+      byAxis[axis] = std::max(byAxis[axis], sv[k] / largest);
+    }
+    const double heavePitch = sv.getMinValue() / largest, roll = byAxis[2], surge = byAxis[0];
+    std::cout << "[figures] L cVe eJe at " << e.Z << " m, singular value / largest: heave-pitch " << heavePitch
+              << ", roll " << roll << ", surge " << surge << ", yaw " << byAxis[4] << std::endl;
+    EXPECT_NEAR(heavePitch, e.heavePitch, 0.05 * e.heavePitch);
+    EXPECT_NEAR(roll, e.roll, 0.05 * e.roll);
+    EXPECT_NEAR(surge, e.surge, 0.05 * e.surge);
+    EXPECT_DOUBLE_EQ(byAxis[4], 1.);
+    EXPECT_LT(heavePitch, law.getPseudoInverseThreshold());
+    EXPECT_GT(roll, law.getPseudoInverseThreshold());
+  }
+}
+
 TEST(ServoLaw, SaturationScalesTheWholeCommandAndKeepsItsDirection)
 {
   const std::vector<vpPoint> points = vpSSLTarget::ssl3a3().getPoints();

@@ -282,6 +282,7 @@ void vpSSLServoLaw::fail(vpSSLServoStatus status)
   m_velocity = vpColVector(6, 0.);
   m_cameraVelocity = vpColVector(6, 0.);
   m_error = vpColVector();
+  m_taskJacobian = vpMatrix();
   m_pointError = kNaN;
   m_centreDepth = kNaN;
   m_centreX = kNaN;
@@ -447,6 +448,7 @@ vpColVector vpSSLServoLaw::solve(const vpSSLServoInput &input, bool centringOnly
     }
     qdot = task.computeControlLaw();
     m_error = task.getError();
+    m_taskJacobian = task.getTaskJacobian();
   } catch (const std::exception &) {
     fail(SSL_SERVO_NUMERICAL_FAILURE);
     return m_velocity;

@@ -214,6 +214,12 @@ public:
   vpColVector toCameraVelocity(const vpColVector &v) const;
   //! Last task error e = s - s* (empty after a failure).
   const vpColVector &getError() const { return m_error; }
+  /*!
+    Task Jacobian L cVe eJe of the last computation (one row per feature coordinate, one column per enabled axis,
+    weights included; empty after a failure), as vpServo::getTaskJacobian(): its singular values are what
+    setPseudoInverseThreshold() compares.
+  */
+  const vpMatrix &getTaskJacobian() const { return m_taskJacobian; }
   //! Mean image error of the points, sqrt(mean |p - p*|^2) in normalised coordinates (NaN after a failure).
   double getPointError() const { return m_pointError; }
   //! Depth of the target centre in the last valid input (m, NaN after a failure).
@@ -253,6 +259,7 @@ private:
   vpColVector m_velocity;
   vpColVector m_cameraVelocity;
   vpColVector m_error;
+  vpMatrix m_taskJacobian;
   double m_pointError;
   double m_centreDepth;
   double m_centreX;
