@@ -7,15 +7,21 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector "$@"
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks \
-           --threshold --no-normalize --threads --max-frames --help; do
+           --decimation --threshold --no-normalize --threads --max-frames --help; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
-# Small-landmark mode sees B at 4.8 m (11.5 px) in the recorded clear-water approach, where the default mode cannot.
+# Small-landmark mode sees B at 4.8 m (11.5 px) in the recorded clear-water approach.
 "$BIN" --input "$DATA/sequences/approach-clear/images/000006.png" --small-landmarks --json --output "$WORK/small" \
   > "$WORK/small.jsonl" 2> /dev/null || fail "--small-landmarks exit code $?"
 python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["found"] and "B" in t["landmarks"], t' \
   "$WORK/small.jsonl" || fail "--small-landmarks does not find B at 4.8 m"
+
+# The fast mode reads B at 1.4 m (40.7 px) in the same approach (doc/detector.md, setDecimation(2)).
+"$BIN" --input "$DATA/sequences/approach-clear/images/000010.png" --decimation 2 --json --output "$WORK/dec2" \
+  > "$WORK/dec2.jsonl" 2> /dev/null || fail "--decimation 2 exit code $?"
+python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["target"]; assert t["found"] and "B" in t["landmarks"], t' \
+  "$WORK/dec2.jsonl" || fail "--decimation 2 does not find B at 1.4 m"
 
 # A sequence of the demo images with a camera: one JSON object per image on stdout, nothing else.
 "$BIN" --input "$DATA/images/ssl3-a3-%02d.png" --camera "$DATA/camera/camera-640x480.xml" --json \
@@ -98,6 +104,9 @@ printf 'name t\nlandmark B 0 0 0 abc\n' > "$WORK/bad-target.txt"
   fail "target error: $(cat "$WORK/target.err")"
 "$BIN" --input x --window 500 > /dev/null 2> "$WORK/opt.err"
 [ $? -eq 2 ] && [ "$(wc -l < "$WORK/opt.err")" -eq 1 ] || fail "bad window: $(cat "$WORK/opt.err")"
+"$BIN" --input x --decimation 3 > /dev/null 2> "$WORK/dec.err"
+[ $? -eq 2 ] && [ "$(wc -l < "$WORK/dec.err")" -eq 1 ] && grep -q -- "--decimation" "$WORK/dec.err" ||
+  fail "bad decimation: $(cat "$WORK/dec.err")"
 "$BIN" > /dev/null 2>&1
 [ $? -eq 2 ] || fail "missing --input must exit 2"
 e2e_finish
