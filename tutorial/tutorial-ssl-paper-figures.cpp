@@ -263,7 +263,8 @@ void figure2(const std::string &dir, bool quick, std::ostream &md)
     plot.addSeries("AprilTag 36h11 detection rate", x, at, vpColor::none, vpSSLPlot::STYLE_LINE_MARKERS);
     plot.setYRange(-0.2, 1.05);
     plot.save(dir + "/" + s.file, 640, 320);
-    for (size_t i = 0; i < x.size(); i += std::max<size_t>(1, x.size() / 4))
+    // Every sample, so that each value the plots show can be read in the Markdown as well.
+    for (size_t i = 0; i < x.size(); ++i)
       md << "| " << s.file.substr(5, s.file.size() - 9) << " | " << vpSSLBenchMath::fmt(x[i], 2) << " | "
          << vpSSLBenchMath::fmt(lin1[i], 3) << " | " << vpSSLBenchMath::fmt(lin4[i], 3) << " | "
          << vpSSLBenchMath::fmt(circ[i], 3) << " | " << vpSSLBenchMath::fmt(at[i], 2) << " |\n";
