@@ -23,7 +23,7 @@ const unsigned int kMeasuredFoundB = 26;
 const unsigned int kSmallViews = 150;
 const unsigned int kSmallEligible = 105;
 const unsigned int kSmallFoundWith = 20;
-const unsigned int kSmallFoundWithout = 12;
+const unsigned int kSmallFoundWithout = 13;
 
 // A clean view: no water loss or veiling light, uniform light, no blur, noise, gamma or JPEG, the sheet on dark
 // water, fine supersampling; the pose is set by the caller.

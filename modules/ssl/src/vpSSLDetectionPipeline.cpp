@@ -25,6 +25,17 @@ const unsigned int kShortWindow = 10;
 // has many more peaks over the threshold than w = 40, and the 16 strongest find every small landmark the 64
 // strongest do on the independent corpus (doc/detector.md).
 const unsigned int kShortWindowPeaks = 16;
+// A full search at full resolution computes w only where the image's half, matched with w / 2 (the same radii), has
+// a local maximum over kCandidateThreshold of the peak threshold: in the tiles of kCandidateTile px within
+// kCandidateReach px of it (the full-resolution peak lies within 2-4 px of the half image's).
+const double kCandidateThreshold = 0.75;
+const int kCandidateTile = 16;
+const double kCandidateReach = 12.;
+
+unsigned int halfWindow(unsigned int w)
+{
+  return std::max(2u, w / 2);
+}
 
 // Twice the resolution, bilinear, pixel centres kept: output (u, v) samples input ((u + 0.5) / 2 - 0.5, ...), edges
 // repeated. Output row v mixes input rows (v - 1) / 2 and the next one, 3:1 for odd v and 1:3 for even v.
@@ -100,8 +111,8 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
     : m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(), m_identifier(target),
       m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
-      m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_maxRadius(300.), m_radiusSweep(false),
-      m_threshold(0.07), m_planner(), m_noRois(), m_lastSearchWasFull(true)
+      m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_matchHalf(halfWindow(40), target.getP()),
+      m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.07), m_planner(), m_noRois(), m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
   m_allAroundTried.reserve(kAllAroundBudget);
@@ -113,6 +124,7 @@ void vpSSLDetectionPipeline::setWindow(unsigned int w)
 {
   m_match.setWindow(w);
   m_matchCoarse.setWindow(coarseWindow(w));
+  m_matchHalf.setWindow(halfWindow(w));
   m_window = w;
   if (m_upsample) {
     m_match.setWindow(kSmallModeWindow);
@@ -352,7 +364,15 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
     }
     m_times.normalization += elapsedMs(t);
 
-    if (full) {
+    // A full search at full resolution matches w where the half image says a landmark of its radii may be.
+    const bool candidates = full && !m_upsample && In->getWidth() >= 2 && In->getHeight() >= 2;
+    const std::vector<vpRect> *peakRegions = rois;
+    m_candidateRegions.clear();
+    if (candidates) {
+      planCandidateRegions(*In);
+      matchRegions(m_match, *In, m_candidateRegions, map);
+      peakRegions = &m_candidateRegions;
+    } else if (full) {
       m_match.compute(*In, map.map);
       map.allWritten = true;
     } else {
@@ -362,7 +382,11 @@ void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, cons
 
     maxValue = m_match.getMaxValue();
     m_peakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * maxValue))));
-    m_peakDetector.detect(map.map, m_peaks, *rois);
+    if (candidates && m_candidateRegions.empty()) {
+      m_peaks.clear(); // no region: an empty list would mean the whole image
+    } else {
+      m_peakDetector.detect(map.map, m_peaks, *peakRegions);
+    }
     m_times.peaks += elapsedMs(t);
     if (full && m_shortWindow != 0 && !m_upsample) {
       addShortWindowPeaks(*In, maxValue, t);
@@ -472,8 +496,7 @@ void vpSSLDetectionPipeline::addShortWindowPeaks(const vpImage<unsigned char> &n
   addPeaks(m_shortMap, false);
   const int Wh = static_cast<int>(normalized.getWidth() / 2), Hh = static_cast<int>(normalized.getHeight() / 2);
   if (Wh > 0 && Hh > 0) {
-    m_shortHalf.resize(static_cast<unsigned int>(Hh), static_cast<unsigned int>(Wh));
-    decimate2(normalized, nullptr, 0, 0, Wh, Hh, m_shortHalf);
+    // planCandidateRegions() has made the half image of this frame.
     m_matchShort.compute(m_shortHalf, m_shortHalfMap);
     addPeaks(m_shortHalfMap, true);
   }
@@ -482,6 +505,69 @@ void vpSSLDetectionPipeline::addShortWindowPeaks(const vpImage<unsigned char> &n
     return a.value != b.value ? a.value > b.value : (a.v != b.v ? a.v < b.v : a.u < b.u);
   });
   m_times.peaks += elapsedMs(t);
+}
+
+void vpSSLDetectionPipeline::planCandidateRegions(const vpImage<unsigned char> &normalized)
+{
+  const int W = static_cast<int>(normalized.getWidth()), H = static_cast<int>(normalized.getHeight());
+  const int Wh = W / 2, Hh = H / 2;
+  m_shortHalf.resize(static_cast<unsigned int>(Hh), static_cast<unsigned int>(Wh));
+  decimate2(normalized, nullptr, 0, 0, Wh, Hh, m_shortHalf);
+  m_matchHalf.compute(m_shortHalf, m_halfMap);
+  const int threshold =
+      std::max(1, static_cast<int>(std::ceil(kCandidateThreshold * m_threshold * m_matchHalf.getMaxValue())));
+  const int tw = (W + kCandidateTile - 1) / kCandidateTile, th = (H + kCandidateTile - 1) / kCandidateTile;
+  m_activeTiles.assign(static_cast<size_t>(tw) * static_cast<size_t>(th), 0);
+  // Every local maximum (3x3, plateaus included) over the threshold: no suppression, which could drop the maximum of
+  // a landmark next to a stronger one.
+  for (int y = 0; y < Hh; ++y) {
+    const int *row = m_halfMap[y];
+    for (int x = 0; x < Wh; ++x) {
+      const int m = row[x];
+      if (m < threshold) {
+        continue;
+      }
+      bool maximum = true;
+      for (int dy = -1; dy <= 1 && maximum; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx >= 0 && ny >= 0 && nx < Wh && ny < Hh && m_halfMap[ny][nx] > m) {
+            maximum = false;
+            break;
+          }
+        }
+      }
+      if (!maximum) {
+        continue;
+      }
+      // Pixel x of the half image is centred on pixel 2 x + 0.5 of the image.
+      const double u = 2. * x + 0.5, v = 2. * y + 0.5;
+      const int x0 = std::max(0, static_cast<int>(std::floor((u - kCandidateReach) / kCandidateTile)));
+      const int x1 = std::min(tw - 1, static_cast<int>(std::floor((u + kCandidateReach) / kCandidateTile)));
+      const int y0 = std::max(0, static_cast<int>(std::floor((v - kCandidateReach) / kCandidateTile)));
+      const int y1 = std::min(th - 1, static_cast<int>(std::floor((v + kCandidateReach) / kCandidateTile)));
+      for (int ty = y0; ty <= y1; ++ty) {
+        std::fill(m_activeTiles.begin() + ty * tw + x0, m_activeTiles.begin() + ty * tw + x1 + 1, 1);
+      }
+    }
+  }
+  m_candidateRegions.clear();
+  for (int ty = 0; ty < th; ++ty) {
+    for (int tx = 0; tx < tw;) {
+      if (!m_activeTiles[static_cast<size_t>(ty * tw + tx)]) {
+        ++tx;
+        continue;
+      }
+      int end = tx;
+      while (end < tw && m_activeTiles[static_cast<size_t>(ty * tw + end)]) {
+        ++end;
+      }
+      const int u0 = tx * kCandidateTile, v0 = ty * kCandidateTile;
+      const int u1 = std::min(W, end * kCandidateTile), v1 = std::min(H, (ty + 1) * kCandidateTile);
+      m_candidateRegions.push_back(vpRect(u0, v0, u1 - u0, v1 - v0));
+      tx = end;
+    }
+  }
 }
 
 bool vpSSLDetectionPipeline::insideFound(double u, double v) const

@@ -45,6 +45,7 @@ public:
     m_match.setNbThreads(n);
     m_matchCoarse.setNbThreads(n);
     m_matchShort.setNbThreads(n);
+    m_matchHalf.setNbThreads(n);
   }
   void setDecimation(unsigned int decimation);
   void setMaxRadius(double r);
@@ -70,6 +71,8 @@ public:
   const vpImage<int> &getMatchingMap() const { return m_mainMap.map; }
   const vpSSLMatchingFunction &getMatchingFunction() const { return m_match; }
   const vpSSLRegionPlanner &getPlanner() const { return m_planner; }
+  // Where the last full search at full resolution computed the map (planCandidateRegions()).
+  const std::vector<vpRect> &getCandidateRegions() const { return m_candidateRegions; }
 
 private:
   // A matching map and the regions the last tracking frame wrote into it (the rest is 0).
@@ -110,6 +113,9 @@ private:
   // of its half to m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first.
   void addShortWindowPeaks(const vpImage<unsigned char> &normalized, int mainMax,
                            std::chrono::steady_clock::time_point &t);
+  // Full search at full resolution: the regions where w is computed, around the candidates of w / 2 on the normalised
+  // image's half (m_shortHalf, computed here); m_candidateRegions holds them.
+  void planCandidateRegions(const vpImage<unsigned char> &normalized);
 
   vpSSLBrightnessNormalizer m_normalizer;
   vpSSLMatchingFunction m_match;
@@ -127,6 +133,10 @@ private:
   unsigned int m_shortWindow;          // 0: no short-window map
   vpSSLMatchingFunction m_matchShort;  // the short window, full searches at full resolution
   vpSSLPeakDetector m_shortPeakDetector;
+  vpSSLMatchingFunction m_matchHalf;      // w / 2 on the normalised image's half: where w is worth computing
+  vpSSLImageBuffer<int> m_halfMap;        // its map
+  std::vector<char> m_activeTiles;        // tiles of the image where w is computed
+  std::vector<vpRect> m_candidateRegions; // those tiles, merged along each row of tiles
   double m_maxRadius;
   bool m_radiusSweep;
   double m_threshold;

@@ -28,6 +28,13 @@ public:
   {
     return detector.m_impl->getPlanner().getMapRegions();
   }
+  // Regions where the last full search at full resolution (default window, no small-landmark mode) computed the
+  // matching map: around the candidates of the half image. The map is 0 outside them. Empty after any other
+  // search.
+  static const std::vector<vpRect> &getCandidateRegions(const vpSSLDetector &detector)
+  {
+    return detector.m_impl->getCandidateRegions();
+  }
 };
 
 #endif
