@@ -60,22 +60,36 @@ const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
 const int kMinPairs = 2;
 // Sobel gradient of the 3x3 box average at (u, v), 2 px or more inside the image: the 5x5 kernel smooths by
-// [1 3 4 3 1] across the derivative [-1 -1 0 1 1].
+// [1 3 4 3 1] across the derivative [-1 -1 0 1 1]. In integers: every partial sum is exact (under 10^4).
 void smoothedGradient(const vpImage<unsigned char> &I, int u, int v, double &gx, double &gy)
 {
-  static const double ks[5] = {1., 3., 4., 3., 1.}, kd[5] = {-1., -1., 0., 1., 1.};
-  gx = 0.;
-  gy = 0.;
+  int along[5], across[5];
   for (int j = 0; j < 5; ++j) {
     const unsigned char *r = I[v + j - 2] + u - 2;
-    double along = 0., across = 0.;
-    for (int i = 0; i < 5; ++i) {
-      along += kd[i] * r[i];
-      across += ks[i] * r[i];
-    }
-    gx += ks[j] * along;
-    gy += kd[j] * across;
+    along[j] = (r[3] + r[4]) - (r[0] + r[1]);
+    across[j] = r[0] + r[4] + 3 * (r[1] + r[3]) + 4 * r[2];
   }
+  gx = along[0] + along[4] + 3 * (along[1] + along[3]) + 4 * along[2];
+  gy = (across[3] + across[4]) - (across[0] + across[1]);
+}
+
+// Directions of the profile's rays, (cos t, sin t) at t = 2 pi (k + 1/2) / kRays: the same for every profile.
+struct RayDirections
+{
+  double c[kRays], s[kRays];
+  RayDirections()
+  {
+    for (int k = 0; k < kRays; ++k) {
+      const double t = 2. * M_PI * (k + 0.5) / kRays;
+      c[k] = std::cos(t);
+      s[k] = std::sin(t);
+    }
+  }
+};
+const RayDirections &rayDirections()
+{
+  static const RayDirections directions;
+  return directions;
 }
 } // namespace
 
@@ -222,10 +236,11 @@ bool vpSSLConcentricReader::readProfile(const vpImage<unsigned char> &I, const F
   for (int bin = 0; bin < m_nbBins; ++bin) {
     rho[bin] = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
   }
+  const RayDirections &directions = rayDirections();
   for (int k = 0; k < kRays; ++k) {
-    const double t = 2. * M_PI * (k + 0.5) / kRays;
-    const double dx = S(0, 0) * std::cos(t) + S(0, 1) * std::sin(t);
-    const double dy = S(1, 0) * std::cos(t) + S(1, 1) * std::sin(t);
+    const double ct = directions.c[k], st = directions.s[k];
+    const double dx = S(0, 0) * ct + S(0, 1) * st;
+    const double dy = S(1, 0) * ct + S(1, 1) * st;
     const int sector = k * kSectors / kRays;
     for (int bin = 0; bin < m_nbBins; ++bin) {
       const double x = f.u + rho[bin] * dx, y = f.v + rho[bin] * dy;

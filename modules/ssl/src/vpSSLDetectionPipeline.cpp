@@ -31,6 +31,8 @@ const unsigned int kShortWindowPeaks = 16;
 const double kCandidateThreshold = 0.75;
 const int kCandidateTile = 16;
 const double kCandidateReach = 12.;
+// Columns of the half map passed over at once where none reaches the candidates' threshold (a power of 2).
+const int kCandidateBlock = 16;
 
 unsigned int halfWindow(unsigned int w)
 {
@@ -523,6 +525,18 @@ void vpSSLDetectionPipeline::planCandidateRegions(const vpImage<unsigned char> &
   for (int y = 0; y < Hh; ++y) {
     const int *row = m_halfMap[y];
     for (int x = 0; x < Wh; ++x) {
+      // Most of the map is under the threshold: a block of it is passed over on its largest value.
+      if ((x & (kCandidateBlock - 1)) == 0) {
+        const int end = std::min(Wh, x + kCandidateBlock);
+        int largest = row[x];
+        for (int k = x + 1; k < end; ++k) {
+          largest = std::max(largest, row[k]);
+        }
+        if (largest < threshold) {
+          x = end - 1;
+          continue;
+        }
+      }
       const int m = row[x];
       if (m < threshold) {
         continue;

@@ -52,6 +52,8 @@ struct Scratch
   std::vector<int> rowFirst;    // merged intervals of row v: intervals[rowFirst[v] .. rowFirst[v + 1])
   std::vector<Span> intervals;  // merged intervals, row by row
   std::vector<Span> rowScratch; // intervals of one row before merging
+  std::vector<int> order;       // boxes by first row
+  std::vector<int> active;      // boxes that cover the current row
   std::vector<int> cursor;      // next column of each interval to cut into spans
   std::vector<Span> match, copy, zero;
 };
@@ -89,19 +91,52 @@ int stripWidth(int window)
   return std::max(128, 24 * 1024 / (2 * window + 1) / 128 * 128);
 }
 
-// Merged union of the boxes (grown by `grow` pixels on each side, clipped to the image) for every row.
+// Merged union of the boxes (grown by `grow` pixels on each side, clipped to the image) for every row. The boxes
+// are swept by their first row, so that each row looks only at the boxes that cover it: a full search matches up to
+// a few hundred candidate tiles.
 void mergeRows(Scratch &s, int W, int H, int grow)
 {
   s.rowFirst.assign(static_cast<std::size_t>(H) + 1, 0);
   s.intervals.clear();
+  s.order.resize(s.boxes.size());
+  for (std::size_t k = 0; k < s.boxes.size(); ++k) {
+    s.order[k] = static_cast<int>(k);
+  }
+  std::sort(s.order.begin(), s.order.end(),
+            [&s](int a, int b) { return s.boxes[a].v0 < s.boxes[b].v0 || (s.boxes[a].v0 == s.boxes[b].v0 && a < b); });
+  s.active.clear();
+  std::size_t next = 0;
   for (int v = 0; v < H; ++v) {
     s.rowFirst[v] = static_cast<int>(s.intervals.size());
-    s.rowScratch.clear();
-    for (const Box &b : s.boxes) {
-      if (v >= b.v0 - grow && v < b.v1 + grow) {
-        s.rowScratch.push_back({v, std::max(0, b.u0 - grow), std::min(W, b.u1 + grow)});
+    bool changed = v == 0;
+    while (next < s.order.size() && s.boxes[s.order[next]].v0 - grow <= v) {
+      s.active.push_back(s.order[next++]);
+      changed = true;
+    }
+    for (std::size_t k = 0; k < s.active.size();) {
+      if (v >= s.boxes[s.active[k]].v1 + grow) {
+        s.active[k] = s.active.back(); // below the box: it covers no later row
+        s.active.pop_back();
+        changed = true;
+      } else {
+        ++k;
       }
     }
+    if (!changed) {
+      // The same boxes as the row above: the same intervals.
+      const int first = s.rowFirst[v - 1], last = s.rowFirst[v];
+      for (int k = first; k < last; ++k) {
+        const Span r = s.intervals[static_cast<std::size_t>(k)];
+        s.intervals.push_back({v, r.u0, r.u1});
+      }
+      continue;
+    }
+    s.rowScratch.clear();
+    for (const int k : s.active) {
+      const Box &b = s.boxes[static_cast<std::size_t>(k)];
+      s.rowScratch.push_back({v, std::max(0, b.u0 - grow), std::min(W, b.u1 + grow)});
+    }
+    // The union does not depend on the order of spans that start at the same column.
     if (s.rowScratch.size() > 1) {
       std::sort(s.rowScratch.begin(), s.rowScratch.end(), [](const Span &a, const Span &b) { return a.u0 < b.u0; });
     }
