@@ -11,6 +11,7 @@
 
 #include <string>
 #include <thread>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -250,7 +251,7 @@ TEST(MatchingFast, regionsOfInterestMatchTheReferenceInsideAndAreZeroOutside)
   const vpImage<unsigned char> I = makeImage(Kind::Rings, 211, 143, 0.5, 5);
   vpImage<int> ref;
   f.computeReference(I, ref);
-  const std::vector<std::vector<vpRect>> cases = {
+  std::vector<std::vector<vpRect>> cases = {
       {},                                                                           // nothing: all zero
       {vpRect(30, 20, 50, 40)},                                                     // one box inside
       {vpRect(-15, -10, 40, 30), vpRect(190, 120, 50, 50)},                         // partly outside (corners)
@@ -258,6 +259,14 @@ TEST(MatchingFast, regionsOfInterestMatchTheReferenceInsideAndAreZeroOutside)
       {vpRect(100, 50, 0, 30), vpRect(300, 300, 10, 10), vpRect(-50, -50, 20, 20)}, // empty and fully outside
       {vpRect(12.5, 7.2, 30.3, 20.9), vpRect(0, 0, 1, 1), vpRect(210, 142, 1, 1)},  // fractional, single pixels
       {vpRect(-1000, -1000, 5000, 5000)}};                                          // the whole image and more
+  // Many boxes that start and end on different rows, in no order, overlapping or not (a full search's candidate
+  // tiles are a few hundred such boxes).
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> position(-20, 220), side(1, 40);
+  cases.emplace_back();
+  for (int k = 0; k < 60; ++k) {
+    cases.back().push_back(vpRect(position(rng), position(rng), side(rng), side(rng)));
+  }
   for (std::size_t c = 0; c < cases.size(); ++c) {
     for (unsigned int n : {1u, 2u, 3u}) {
       f.setNbThreads(n);
