@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <random>
 #include <string>
 #include <thread>
-#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
