@@ -528,11 +528,7 @@ void vpSSLDetectionPipeline::planCandidateRegions(const vpImage<unsigned char> &
       // Most of the map is under the threshold: a block of it is passed over on its largest value.
       if ((x & (kCandidateBlock - 1)) == 0) {
         const int end = std::min(Wh, x + kCandidateBlock);
-        int largest = row[x];
-        for (int k = x + 1; k < end; ++k) {
-          largest = std::max(largest, row[k]);
-        }
-        if (largest < threshold) {
+        if (*std::max_element(row + x, row + end) < threshold) {
           x = end - 1;
           continue;
         }
