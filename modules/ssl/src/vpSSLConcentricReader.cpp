@@ -59,6 +59,10 @@ const double kMinSimilarity = 0.5;
 const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
 const int kMinPairs = 2;
+// Smallest inner disc (px, R p^2) whose own fit gives the centre, and the largest move of the centre it may make
+// (share of that disc).
+const double kMinInnerDisc = 8.;
+const double kInnerShift = 0.1;
 // Sobel gradient of the 3x3 box average at (u, v), 2 px or more inside the image: the 5x5 kernel smooths by
 // [1 3 4 3 1] across the derivative [-1 -1 0 1 1]. In integers: every partial sum is exact (under 10^4).
 void smoothedGradient(const vpImage<unsigned char> &I, int u, int v, double &gx, double &gy)
@@ -570,19 +574,36 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
       outer = 0.;
       continue;
     }
-    m_similarity = profileSimilarity(level, tauA, tR);
+    // The profile is compared with the wave whose outer edge is the one reported, the same that similarity() sees
+    // at the landmark read.
+    const double tEdges = tR + shift / edges;
+    m_similarity = profileSimilarity(level, tauA, tEdges);
     if (m_similarity < kMinSimilarity) {
       outer = 0.;
       continue;
     }
-    outer = std::exp((tR + shift / edges) * L);
+    outer = std::exp(tEdges * L);
     break;
   }
   if (outer == 0.) {
     return false;
   }
 
-  // 4. The outer ellipse: the level set rho = R of the fitted quadratic form.
+  // 4. The centre: the image of the landmark's centre under perspective is the centre of its smallest ellipses, to
+  //    which the outer rings' centres drift (the widest ones dominate the fit of the whole disc). Where the disc
+  //    inside the third ring, R p^2, is wide enough for its gradients to pin a centre, its own fit gives the centre,
+  //    unless the rings there do not lock it or pull it away (a blur that greys them).
+  const double disc = outer * m_p * m_p;
+  if (disc >= kMinInnerDisc) {
+    Fit inner = best;
+    if (fit(I, disc, 6, std::max(kFineGrid, 2. * disc), false, inner) && inner.quality >= kLocked &&
+        std::hypot(inner.u - best.u, inner.v - best.v) <= kInnerShift * disc) {
+      best.u = inner.u;
+      best.v = inner.v;
+    }
+  }
+
+  // 5. The outer ellipse: the level set rho = R of the fitted quadratic form.
   m_stage = 4;
   Eigen::Matrix2d Q;
   Q << best.q[0], best.q[1], best.q[1], best.q[2];

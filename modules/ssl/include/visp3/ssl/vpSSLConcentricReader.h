@@ -22,6 +22,8 @@
   once; the outer ring is the outermost p-similar copy whose black ring stands dark against the white one inside
   it in nearly every direction, as dark as the next black ring; the scale is then read where the profile crosses
   the mid level at the two printed edges inside the outer ring (R sqrt(p) and R p), which blur does not move.
+  Under perspective the outer rings' centres drift from the image of the landmark's centre: where the disc inside
+  the third ring (R p^2) is 8 px or more, the centre is that of the same fit over that disc alone.
 
   It reads landmarks that the ray reading of vpSSLRadiusEstimator rejects: small and blurred ones, strongly
   oblique ones, and those whose rings a few rays cannot follow. vpSSLDetector asks it where the ray reading
