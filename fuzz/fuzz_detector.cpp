@@ -1,10 +1,17 @@
 // libFuzzer target: the detector on arbitrary image bytes and sizes. The first byte picks the mode:
 // - even: the rest is an image file (PNG, JPEG, PNM, BMP or anything), read by vpSSLImageIo (headers that
-//   declare huge sizes, truncated and corrupt data), then detected;
-// - odd: the next four bytes give a width and a height (1 to 512 each: 1x1, 1xN, Nx1 included) and the rest the
-//   pixels, repeated to fill the image, with the detector's settings (small-landmark mode, window, decimation,
-//   normalisation) from the following bytes.
+//   declare huge sizes, truncated and corrupt data), then detected, on one thread, in its top-left 320x240 px at
+//   most (the committed photograph of ssl3-a3 whole);
+// - odd: the next four bytes give a width and a height (1 to kMaxSide each: 1x1, 1xN, Nx1 included) and the rest
+//   the pixels, repeated to fill the image, with the detector's settings (small-landmark mode, window, decimation,
+//   normalisation, one or two threads) from the following bytes.
 // Every path ends in landmarks within the image or a vpException.
+//
+// kMaxSide is 128, the longest window: windows longer than the image, several of the 16 px tiles of a full search
+// and row lengths from 1 px to several SIMD vectors are all reached, while the matching's cost, proportional to the
+// area, is about a fifteenth of that of images up to 512 px. Larger images run the same code over more tiles; the
+// sanitizer build of the tests runs it on them.
+#include <algorithm>
 #include <cmath>
 
 #include <visp3/core/vpException.h>
@@ -16,6 +23,8 @@
 #include "fuzz_common.h"
 
 namespace {
+const unsigned int kMaxSide = 128;
+
 void detect(vpSSLDetector &detector, const vpImage<unsigned char> &I)
 {
   // vpSSLDetector::detect() checks its image with vpSSLInputLimits::checkImage() (a wrapped vpImage size is refused
@@ -45,15 +54,25 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
       detector.setSmallLandmarkMode(false);
       detector.setWindow(40);
       detector.setShortWindow(10);
+      detector.setNbThreads(1);
+      if (I.getWidth() > 320 || I.getHeight() > 240) {
+        vpImage<unsigned char> crop(std::min(I.getHeight(), 240u), std::min(I.getWidth(), 320u));
+        for (unsigned int r = 0; r < crop.getHeight(); ++r) {
+          std::copy(I[r], I[r] + crop.getWidth(), crop[r]);
+        }
+        I = crop;
+      }
       detect(detector, I);
       return 0;
     }
-    const unsigned int w = 1 + in.u16() % 512, h = 1 + in.u16() % 512;
+    const unsigned int w = 1 + in.u16() % kMaxSide, h = 1 + in.u16() % kMaxSide;
     const uint8_t settings = in.byte();
     detector.setSmallLandmarkMode(settings & 1);
     detector.setBrightnessNormalization(settings & 2);
     detector.setDecimation(settings & 4 ? 2 : 1);
-    detector.setWindow(2 + in.byte() % 127);
+    const uint8_t window = in.byte();
+    detector.setWindow(2 + (window & 127) % 127);
+    detector.setNbThreads(1 + (window >> 7));
     detector.setShortWindow(settings & 8 ? 0u : 2u + 8u * (settings >> 4)); // 0, or 2 to 122
     I.resize(h, w, 0);
     if (in.left() > 0) {

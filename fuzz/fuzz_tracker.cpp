@@ -4,6 +4,7 @@
 // raw bytes per element: NaN, infinities, 1e300). After every step the state is one of the four, a pose when there
 // is one is finite, and the only exceptions are vpExceptions. The rest of the input drives vpSSLParticleFilter
 // directly with arbitrary observations (labels, centres, radii) and hypotheses.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -81,6 +82,8 @@ vpHomogeneousMatrix pose(sslfuzz::Input &in, uint8_t kind)
 void fuzzTracker(sslfuzz::Input &in)
 {
   vpSSLTracker tracker(vpSSLTarget::ssl3a3(), camera());
+  // One thread: the fuzzer runs one process per core, and fuzz_detector covers the matching on two threads.
+  tracker.getDetector().setNbThreads(1);
   tracker.getFilter().setNbParticles(50 + in.byte());
   tracker.setSeed(in.byte());
   vpHomogeneousMatrix odometry;
@@ -91,14 +94,11 @@ void fuzzTracker(sslfuzz::Input &in)
     if (what % 8 < 4) {
       const vpImage<unsigned char> &src = images()[what % 4];
       const int du = static_cast<int8_t>(in.byte()) / 2, dv = static_cast<int8_t>(in.byte()) / 2;
+      // The photograph moved by (du, dv), white where it leaves the frame, copied a row at a time.
       I.resize(240, 320, 255);
-      for (int r = 0; r < 240; ++r) {
-        for (int c = 0; c < 320; ++c) {
-          const int rr = r - dv, cc = c - du;
-          if (rr >= 0 && rr < 240 && cc >= 0 && cc < 320) {
-            I[r][c] = src[rr][cc];
-          }
-        }
+      const int c0 = std::max(0, du), c1 = std::min(320, 320 + du);
+      for (int r = std::max(0, dv); r < std::min(240, 240 + dv); ++r) {
+        std::copy(src[r - dv] + (c0 - du), src[r - dv] + (c1 - du), I[r] + c0);
       }
     } else if (what % 8 == 4) {
       I.resize(240, 320, in.byte());
