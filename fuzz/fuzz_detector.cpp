@@ -16,6 +16,7 @@
 
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImage.h>
+#include <visp3/core/vpImageTools.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl_io/vpSSLImageIo.h>
@@ -24,6 +25,7 @@
 
 namespace {
 const unsigned int kMaxSide = 128;
+const unsigned int kMaxFileWidth = 320, kMaxFileHeight = 240;
 
 void detect(vpSSLDetector &detector, const vpImage<unsigned char> &I)
 {
@@ -55,11 +57,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
       detector.setWindow(40);
       detector.setShortWindow(10);
       detector.setNbThreads(1);
-      if (I.getWidth() > 320 || I.getHeight() > 240) {
-        vpImage<unsigned char> crop(std::min(I.getHeight(), 240u), std::min(I.getWidth(), 320u));
-        for (unsigned int r = 0; r < crop.getHeight(); ++r) {
-          std::copy(I[r], I[r] + crop.getWidth(), crop[r]);
-        }
+      if (I.getWidth() > kMaxFileWidth || I.getHeight() > kMaxFileHeight) {
+        vpImage<unsigned char> crop;
+        vpImageTools::crop(I, 0u, 0u, std::min(I.getHeight(), kMaxFileHeight), std::min(I.getWidth(), kMaxFileWidth),
+                           crop);
         I = crop;
       }
       detect(detector, I);
