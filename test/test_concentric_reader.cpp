@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <visp3/core/vpImageFilter.h>
 #include <visp3/ssl/vpSSLConcentricReader.h>
 #include <visp3/ssl_bench/vpSSLCorpusPhotos.h>
 #include <visp3/ssl_bench/vpSSLCorpusSheet.h>
@@ -73,6 +74,18 @@ template <typename F> void forEachB(F f)
       }
     }
   }
+}
+
+// A landmark on B's true ellipse.
+vpSSLLandmark trueEllipse(const vpSSLCorpusLandmarkTruth &B)
+{
+  vpSSLLandmark l;
+  l.u = B.u;
+  l.v = B.v;
+  l.radius = B.a;
+  l.minorRadius = B.b;
+  l.theta = B.theta;
+  return l;
 }
 
 vpSSLConcentricReader reader()
@@ -183,13 +196,7 @@ TEST(ConcentricReader, SimilaritySeparatesLandmarksFromEqualRings)
   vpSSLConcentricReader r = reader();
   double lowest = 1.;
   forEachB([&](const vpSSLCorpusView &v, const vpSSLCorpusLandmarkTruth &B, double) {
-    vpSSLLandmark l;
-    l.u = B.u;
-    l.v = B.v;
-    l.radius = B.a;
-    l.minorRadius = B.b;
-    l.theta = B.theta;
-    lowest = std::min(lowest, r.similarity(v.getImage(), l));
+    lowest = std::min(lowest, r.similarity(v.getImage(), trueEllipse(B)));
   });
   EXPECT_GE(lowest, 0.5);
   double highest = -1.;
@@ -215,4 +222,59 @@ TEST(ConcentricReader, SimilaritySeparatesLandmarksFromEqualRings)
     }
   }
   EXPECT_LT(highest, 0.5);
+}
+
+TEST(ConcentricReader, EqualRingsTellBlurredBullsEyesApart)
+{
+  // doc/detector.md: a bull's-eye of equal rings blurred by 1.5 to 2 px, read at an outer edge of 15 px, correlates
+  // with s_p at 0.5 or more; isEqualRings() flags every such reading of 15 px and more, and no B of the grid of
+  // corpus views (25 to 100 px, face-on to 60 degrees, up to 2 px of blur) at its true ellipse.
+  vpSSLConcentricReader r = reader();
+  forEachB([&](const vpSSLCorpusView &v, const vpSSLCorpusLandmarkTruth &B, double sigma) {
+    r.similarity(v.getImage(), trueEllipse(B));
+    EXPECT_FALSE(r.isEqualRings()) << "B " << B.a << " px, view angle " << B.viewAngle << ", sigma " << sigma;
+  });
+  // Bull's-eyes of 6 to 10 rings of 3 to 7 px, the centre dark, supersampled 4 x 4 and blurred.
+  const int N = 241, c = 120, k = 4;
+  int passing = 0;
+  for (int rings : {6, 8, 10}) {
+    for (double width : {3., 4., 5., 7.}) {
+      for (double sigma : {0., 1., 1.5, 2.}) {
+        vpImage<unsigned char> I(N, N);
+        for (int v = 0; v < N; ++v) {
+          for (int u = 0; u < N; ++u) {
+            double sum = 0.;
+            for (int j = 0; j < k * k; ++j) {
+              const double rho = std::hypot(u + (j % k + 0.5) / k - 0.5 - c, v + (j / k + 0.5) / k - 0.5 - c);
+              const int ring = static_cast<int>(rho / width);
+              sum += ring < rings && ring % 2 == 0 ? 30. : 200.;
+            }
+            I[v][u] = static_cast<unsigned char>(sum / (k * k) + 0.5);
+          }
+        }
+        if (sigma > 0.) {
+          vpImage<double> F;
+          vpImageFilter::gaussianBlur(I, F, 2 * static_cast<unsigned int>(3. * sigma) + 1, sigma);
+          for (int v = 0; v < N; ++v) {
+            for (int u = 0; u < N; ++u) {
+              I[v][u] = static_cast<unsigned char>(F[v][u] + 0.5);
+            }
+          }
+        }
+        // Read at the outer edge of each dark ring, as the rays read a bull's-eye whose outer rings match s_p.
+        for (int outer = 1; outer < rings; outer += 2) {
+          vpSSLLandmark l;
+          l.u = c;
+          l.v = c;
+          l.radius = l.minorRadius = outer * width;
+          if (l.radius >= 15. && r.similarity(I, l) >= 0.5) {
+            ++passing;
+            EXPECT_TRUE(r.isEqualRings())
+                << rings << " rings of " << width << " px, sigma " << sigma << ", read at " << l.radius << " px";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(passing, 5);
 }

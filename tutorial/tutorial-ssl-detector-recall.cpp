@@ -53,6 +53,7 @@ Options:
                      miss-NNNNN*.png (default 0).
   --decimation D     vpSSLDetector::setDecimation (1 or 2, default 1).
   --small-landmarks  vpSSLDetector::setSmallLandmarkMode(true).
+  --equal-rings      vpSSLDetector::setEqualRingCheck(true).
   --apriltag         Also render every view with an AprilTag 36h11 (id 0, 0.2376 m side,
                      centred where the SSL sheet is) instead of the SSL sheet, and run
                      vpDetectorAprilTag (36h11, quad decimate 2, one thread) on it: the tables
@@ -67,7 +68,7 @@ struct Options
   unsigned int views = 200, negatives = 50, threads = 1, saveImages = 0, saveMisses = 0, decimation = 1;
   unsigned long long seed = 1;
   std::string outputDir = "corpus-out";
-  bool small = false, apriltag = false;
+  bool small = false, equalRings = false, apriltag = false;
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -108,6 +109,8 @@ bool parse(int argc, char **argv, Options &o)
       o.outputDir = argv[++i];
     } else if (a == "--small-landmarks") {
       o.small = true;
+    } else if (a == "--equal-rings") {
+      o.equalRings = true;
     } else if (a == "--apriltag") {
       o.apriltag = true;
     } else {
@@ -171,6 +174,7 @@ void configure(vpSSLDetector &d, const Options &o)
   d.setNbThreads(1);
   d.setDecimation(o.decimation);
   d.setSmallLandmarkMode(o.small);
+  d.setEqualRingCheck(o.equalRings);
 }
 } // namespace
 
@@ -255,8 +259,8 @@ int main(int argc, char **argv)
 
   std::cout << "## Detector recall on the independent corpus\n\n"
             << "Views " << o.views << ", negatives " << o.negatives << ", seed " << o.seed << ", detector: decimation "
-            << o.decimation << (o.small ? ", small-landmark mode" : "") << ", " << photos.size()
-            << " photos; wall time " << seconds << " s on " << o.threads << " thread(s).\n\n";
+            << o.decimation << (o.small ? ", small-landmark mode" : "") << (o.equalRings ? ", equal-ring check" : "")
+            << ", " << photos.size() << " photos; wall time " << seconds << " s on " << o.threads << " thread(s).\n\n";
   evaluator.printTables(std::cout);
 
   const std::string csv = o.outputDir + "/corpus.csv";

@@ -58,6 +58,8 @@ Options:
                       1.5 times the matching work of the default, whose short window already
                       reads from about 8 px of radius; doc/detector.md). Use it for targets at
                       the edge of the range.
+  --equal-rings       Also turn away landmarks whose rings are better explained by rings of
+                      one width (a blurred bull's-eye; off by default, doc/detector.md).
   --decimation D      1 (default) or 2: with 2, the matching function runs on the image
                       decimated twice (the fast mode, for landmarks of about 25 px and more),
                       the rings are still read at full resolution.
@@ -210,7 +212,7 @@ int run(int argc, char **argv)
 {
   std::string input, outputDir;
   ssltut::CameraTargetOptions camera;
-  bool json = false, display = false, normalize = true, smallLandmarks = false;
+  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = false;
   unsigned int window = 40, threads = 0, decimation = 1;
   double threshold = 0.07;
   long maxFrames = -1;
@@ -235,6 +237,8 @@ int run(int argc, char **argv)
       threshold = number(value());
     } else if (a == "--small-landmarks") {
       smallLandmarks = true;
+    } else if (a == "--equal-rings") {
+      equalRings = true;
     } else if (a == "--decimation") {
       decimation = static_cast<unsigned int>(integer(value(), 1, 2));
     } else if (a == "--no-normalize") {
@@ -315,6 +319,7 @@ int run(int argc, char **argv)
   detector.setWindow(window);
   detector.setThreshold(threshold);
   detector.setSmallLandmarkMode(smallLandmarks);
+  detector.setEqualRingCheck(equalRings);
   detector.setDecimation(decimation);
   detector.setBrightnessNormalization(normalize);
   detector.setNbThreads(threads);

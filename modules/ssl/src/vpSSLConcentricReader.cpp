@@ -55,6 +55,14 @@ const double kMinMinorRadius = 2.5;
 const double kEdgeWindow = 0.16;
 // Smallest correlation of the resolved rings' profile with the square wave s_p.
 const double kMinSimilarity = 0.5;
+// A profile is that of equal rings when their best square wave in linear radius (pair period from two narrowest
+// rings to R) correlates with it by kEqualRingMargin more than s_p does, and the rings in [0.2 R, 0.5 R) keep
+// kInnerSpread of the contrast (standard deviation) of those in [0.5 R, R): blur greys a landmark's inner rings,
+// which are narrower, but not a bull's-eye's. The wave's phase and duty are read in kFoldBins steps of a period.
+const double kEqualRingMargin = 0.15;
+const double kInnerSpread = 0.9;
+const double kPeriodGrowth = 1.04;
+const int kFoldBins = 20;
 // How much lighter than its inner part the outer part of the outer ring may be, relative to the contrast.
 const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
@@ -99,7 +107,7 @@ const RayDirections &rayDirections()
 
 vpSSLConcentricReader::vpSSLConcentricReader()
     : m_p(0.5), m_logStep(std::log(2.)), m_minRadius(4.), m_maxRadius(300.), m_stage(0), m_quality(0.),
-      m_similarity(0.), m_tau0(0.), m_nbBins(0)
+      m_similarity(0.), m_profileTauA(0.), m_profileTauR(0.), m_tau0(0.), m_nbBins(0)
 {
 }
 
@@ -322,10 +330,116 @@ double vpSSLConcentricReader::profileSimilarity(const double *level, double tauA
   return n > 0 && ff > 0. ? sf / std::sqrt(ff * n) : 0.;
 }
 
+bool vpSSLConcentricReader::isEqualRings() const
+{
+  if (!(m_profileTauR > m_profileTauA)) {
+    return false; // no profile read by similarity()
+  }
+  double level[kMaxBins];
+  allAround(level);
+  return equalRings(level, m_profileTauA, m_profileTauR);
+}
+
+bool vpSSLConcentricReader::equalRings(const double *level, double tauA, double tR) const
+{
+  const double R = std::exp(tR * m_logStep);
+  double rho[kMaxBins], g[kMaxBins];
+  int n = 0;
+  double mean = 0.;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    const double tau = m_tau0 + (bin + 0.5) / kBinsPerPeriod;
+    if (tau >= tauA && tau < tR && level[bin] >= 0.) {
+      rho[n] = std::exp(tau * m_logStep);
+      g[n] = level[bin];
+      mean += g[n];
+      ++n;
+    }
+  }
+  if (n < kBinsPerPeriod) {
+    return false;
+  }
+  mean /= n;
+  // Spread of the levels over [r0, r1) R; -1 on fewer than three bins.
+  auto spread = [&](double r0, double r1) {
+    double m = 0., q = 0.;
+    int k = 0;
+    for (int i = 0; i < n; ++i) {
+      if (rho[i] >= r0 * R && rho[i] < r1 * R) {
+        m += g[i];
+        q += g[i] * g[i];
+        ++k;
+      }
+    }
+    if (k < 3) {
+      return -1.;
+    }
+    m /= k;
+    return std::sqrt(std::max(0., q / k - m * m));
+  };
+  const double inner = spread(0.2, 0.5), outer = spread(0.5, 1.);
+  if (!(inner >= 0. && outer > 0. && inner > kInnerSpread * outer)) {
+    return false;
+  }
+  double gg = 0.;
+  for (int i = 0; i < n; ++i) {
+    g[i] -= mean;
+    gg += g[i] * g[i];
+  }
+  if (!(gg > 0.)) {
+    return false;
+  }
+  // Pearson correlation with a +-1 wave, from the sum of the centred levels where it is -1 and their number.
+  auto correlation = [&](double darkSum, int dark) {
+    const double mw = static_cast<double>(n - 2 * dark) / n;
+    const double ww = n * (1. - mw * mw);
+    return ww > 0. ? -2. * darkSum / std::sqrt(gg * ww) : 0.;
+  };
+  double darkSum = 0.;
+  int dark = 0;
+  for (int i = 0; i < n; ++i) {
+    double x = tR - std::log(rho[i]) / m_logStep;
+    x -= std::floor(x);
+    if (x < 0.5) {
+      darkSum += g[i];
+      ++dark;
+    }
+  }
+  const double selfSimilar = correlation(darkSum, dark);
+  // Rings of one width: the levels folded modulo the pair period, then every phase and duty from prefix sums.
+  double best = -1.;
+  for (double period = 2. * kMinRingWidth; period <= R; period *= kPeriodGrowth) {
+    double foldSum[2 * kFoldBins + 1] = {0.};
+    int foldCount[2 * kFoldBins + 1] = {0};
+    for (int i = 0; i < n; ++i) {
+      double x = (R - rho[i]) / period;
+      x -= std::floor(x);
+      const int q = std::min(kFoldBins - 1, static_cast<int>(x * kFoldBins));
+      foldSum[q + 1] += g[i];
+      ++foldCount[q + 1];
+    }
+    for (int q = 1; q <= kFoldBins; ++q) {
+      foldSum[q + kFoldBins] = foldSum[q];
+      foldCount[q + kFoldBins] = foldCount[q];
+    }
+    for (int q = 1; q <= 2 * kFoldBins; ++q) {
+      foldSum[q] += foldSum[q - 1];
+      foldCount[q] += foldCount[q - 1];
+    }
+    for (int start = 0; start < kFoldBins; ++start) {
+      for (int width = kFoldBins / 5; width <= 4 * kFoldBins / 5; width += kFoldBins / 10) {
+        best = std::max(
+            best, correlation(foldSum[start + width] - foldSum[start], foldCount[start + width] - foldCount[start]));
+      }
+    }
+  }
+  return best > selfSimilar + kEqualRingMargin;
+}
+
 double vpSSLConcentricReader::similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark)
 {
   // The landmark's ellipse as a quadratic form of determinant 1: rho = sqrt(a b) on the outer ellipse.
   const double a = landmark.radius, b = landmark.minorRadius > 0. ? landmark.minorRadius : landmark.radius;
+  m_profileTauR = 0.;
   if (!(a > 0. && b > 0.) || I.getWidth() < 2 || I.getHeight() < 2) {
     return 0.;
   }
@@ -347,6 +461,8 @@ double vpSSLConcentricReader::similarity(const vpImage<unsigned char> &I, const 
   readProfile(I, f, tauA - 0.5, tR);
   double level[kMaxBins];
   allAround(level);
+  m_profileTauA = tauA;
+  m_profileTauR = tR;
   return profileSimilarity(level, tauA, tR);
 }
 
@@ -406,6 +522,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
   m_stage = 1;
   m_quality = 0.;
   m_similarity = 0.;
+  m_profileTauR = 0.; // the profile read here is not similarity()'s
   if (I.getWidth() < 8 || I.getHeight() < 8) {
     return false;
   }

@@ -114,7 +114,8 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
       m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
       m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_matchHalf(halfWindow(40), target.getP()),
-      m_maxRadius(300.), m_radiusSweep(false), m_threshold(0.07), m_planner(), m_noRois(), m_lastSearchWasFull(true)
+      m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(false), m_threshold(0.07), m_planner(), m_noRois(),
+      m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
   m_allAroundTried.reserve(kAllAroundBudget);
@@ -600,7 +601,8 @@ bool vpSSLDetectionPipeline::selfSimilar(const vpImage<unsigned char> &raw, cons
   // The rings the rays read must shrink by p all the way in, as far as they are resolved: a bull's-eye of equal
   // rings matches the outer two or three only, and so does a landmark read at R / p where dark surroundings past the
   // white margin continue its pattern on most rays.
-  return m_concentricReader.similarity(raw, l) >= kMinSimilarity;
+  return m_concentricReader.similarity(raw, l) >= kMinSimilarity &&
+         !(m_equalRingCheck && m_concentricReader.isEqualRings());
 }
 
 bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
@@ -627,6 +629,15 @@ bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vp
   if (!m_concentricReader.read(raw, c)) {
     m_allAroundTried.push_back(vpImagePoint(v, u));
     return false;
+  }
+  // The reading's own check of s_p sees the rings about the fitted ellipse; the inner rings that tell a bull's-eye
+  // apart are read about the landmark's final centre.
+  if (m_equalRingCheck) {
+    m_concentricReader.similarity(raw, c);
+    if (m_concentricReader.isEqualRings()) {
+      m_allAroundTried.push_back(vpImagePoint(v, u));
+      return false;
+    }
   }
   l = c;
   return true;

@@ -51,6 +51,7 @@ public:
   void setMaxRadius(double r);
   void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
   void setSmallLandmarkMode(bool enable);
+  void setEqualRingCheck(bool enable) { m_equalRingCheck = enable; }
   void setShortWindow(unsigned int w);
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
 
@@ -60,6 +61,7 @@ public:
   unsigned int getDecimation() const { return m_decimation; }
   bool getRadiusSweep() const { return m_radiusSweep; }
   bool getSmallLandmarkMode() const { return m_upsample; }
+  bool getEqualRingCheck() const { return m_equalRingCheck; }
   unsigned int getShortWindow() const { return m_shortWindow; }
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
   bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
@@ -139,6 +141,7 @@ private:
   std::vector<vpRect> m_candidateRegions; // those tiles, merged along each row of tiles
   double m_maxRadius;
   bool m_radiusSweep;
+  bool m_equalRingCheck;
   double m_threshold;
   vpSSLRegionPlanner m_planner;
   std::vector<vpRect> m_noRois; // always empty: the whole image

@@ -71,6 +71,14 @@ bool vpSSLDetector::getSmallLandmarkMode() const
 {
   return m_impl->getSmallLandmarkMode();
 }
+void vpSSLDetector::setEqualRingCheck(bool enable)
+{
+  m_impl->setEqualRingCheck(enable);
+}
+bool vpSSLDetector::getEqualRingCheck() const
+{
+  return m_impl->getEqualRingCheck();
+}
 void vpSSLDetector::setShortWindow(unsigned int w)
 {
   m_impl->setShortWindow(w);

@@ -64,6 +64,15 @@ public:
   */
   double similarity(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark);
 
+  /*!
+    Whether the profile of the last similarity() is better explained by rings of one width than by \f$ s_p \f$
+    (their best square wave in linear radius correlates with it by 0.15 more), while the rings in [0.2 R, 0.5 R)
+    keep 0.9 of the contrast of those in [0.5 R, R): a bull's-eye of equal rings whose blur leaves the outer rings
+    close to \f$ s_p \f$. Blur greys a landmark's inner rings, which are narrower, but not a bull's-eye's. false
+    before any similarity(), after a read() and when similarity() read no profile.
+  */
+  bool isEqualRings() const;
+
 private:
   struct Fit
   {
@@ -77,6 +86,7 @@ private:
   double band(double tau0, double tau1, int sector) const;
   void allAround(double *level) const;
   double profileSimilarity(const double *level, double tauA, double tR) const;
+  bool equalRings(const double *level, double tauA, double tR) const;
 
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius
@@ -84,6 +94,8 @@ private:
   int m_stage;
   double m_quality;
   double m_similarity;
+  // The span in periods of the last similarity()'s profile (isEqualRings()); m_profileTauR 0 when there is none.
+  double m_profileTauA, m_profileTauR;
 
   // Radial profile: bins of kBinsPerPeriod per period of log radius from m_tau0, per sector of directions.
   static constexpr int kSectors = 8;
