@@ -1,4 +1,5 @@
-// libFuzzer target: the detector on arbitrary image bytes and sizes. The first byte picks the mode:
+// libFuzzer target: the detector on arbitrary image bytes and sizes. The first byte picks the mode (and, by its
+// second bit, whether the equal-ring check is on):
 // - even: the rest is an image file (PNG, JPEG, PNM, BMP or anything), read by vpSSLImageIo (headers that
 //   declare huge sizes, truncated and corrupt data), then detected, on one thread, in its top-left 320x240 px at
 //   most (the committed photograph of ssl3-a3 whole);
@@ -49,6 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   const uint8_t mode = in.byte();
   vpImage<unsigned char> I;
   try {
+    detector.setEqualRingCheck(mode & 2);
     if ((mode & 1) == 0) {
       const std::filesystem::path path = sslfuzz::scratch() / "image";
       sslfuzz::writeFile(path, in.rest(), in.left());
