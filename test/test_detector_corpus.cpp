@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -223,6 +225,41 @@ TEST(DetectorCorpus, SameSeedSameView)
   b.render(vpSSLCorpusView::draw(target, photos, 3, 6, true), &sheet, photos);
   second = b.getImage();
   EXPECT_FALSE(first == second);
+}
+
+TEST(DetectorCorpus, RecallTableByMinorSemiAxisOverBlur)
+{
+  // Three eligible B: b / sigma = 5 (found), 50 (missed) and no blur at all (found, in the top bin).
+  vpSSLCorpusEvaluator evaluator;
+  const double blurs[3] = {2., 0.2, 0.};
+  const bool found[3] = {true, false, true};
+  for (int k = 0; k < 3; ++k) {
+    vpSSLCorpusViewResult r;
+    r.index = static_cast<unsigned int>(k);
+    vpSSLCorpusLandmarkTruth t;
+    t.name = "B";
+    t.a = 12.;
+    t.b = 10.;
+    t.wholeInFrame = t.centreInFrame = t.isEllipse = true;
+    t.contrastOverNoise = 10.;
+    t.blurSigma = blurs[k];
+    r.truth.push_back(t);
+    vpSSLCorpusLandmarkResult res;
+    res.found = found[k];
+    r.results.push_back(res);
+    evaluator.add(r);
+  }
+  std::ostringstream os;
+  evaluator.printTables(os);
+  const std::string md = os.str();
+  const size_t table = md.find("#### Recall by minor semi-axis / blur sigma");
+  ASSERT_NE(table, std::string::npos);
+  const size_t next = md.find("####", table + 4);
+  const std::string rows = md.substr(table, next == std::string::npos ? std::string::npos : next - table);
+  EXPECT_NE(rows.find("| 0-4 | - | - | - |"), std::string::npos) << rows;
+  EXPECT_NE(rows.find("| 4-8 | 100.0 % (1) | - | - |"), std::string::npos) << rows;
+  EXPECT_NE(rows.find("| 16-32 | - | - | - |"), std::string::npos) << rows;
+  EXPECT_NE(rows.find("| 32+ | 50.0 % (2) | - | - |"), std::string::npos) << rows;
 }
 
 TEST(DetectorCorpus, DefaultDetectorKeepsItsRecallAndFindsNoTargetInNegatives)

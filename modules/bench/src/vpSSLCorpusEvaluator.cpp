@@ -273,6 +273,16 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.blurSigma; },
        false,
        false},
+      // Ring widths are proportional to the minor semi-axis: this ratio says how many blur sigmas the rings
+      // span across their narrowest direction, which decides whether they survive the blur.
+      {"minor semi-axis / blur sigma",
+       {{"0-4", 0, 4}, {"4-8", 4, 8}, {"8-16", 8, 16}, {"16-32", 16, 32}, {"32+", 32, inf}},
+       // A view without blur falls in the top bin.
+       [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) {
+         return t.b / std::max(t.blurSigma, 1e-6);
+       },
+       false,
+       false},
       {"contrast / noise sigma",
        {{"0-3", 0, 3}, {"3-5", 3, 5}, {"5-10", 5, 10}, {"10-20", 10, 20}, {"20-50", 20, 50}, {"50+", 50, inf}},
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.contrastOverNoise; },
