@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end check of tutorial-ssl-servo-monte-carlo: --help lists every option, bad options exit 2 with one line on
 # stderr, a short run (2 runs, perfect sensor, no rendering) writes runs.csv, summary.md and outcomes.png, 1 and 2
-# threads give the same files; and a short fixed-seed mission (search from a start with the target out of view,
-# align, home, dock) docks every run with SSL, AprilTag (fused) and the perfect sensor.
+# threads give the same files, and SSL and AprilTag find the target on a short rendered run. Whether the mission
+# docks is servo_monte_carlo_mission.sh's check.
 # Usage: servo_monte_carlo.sh TUTORIAL_BIN_DIR DATA_DIR (run from a scratch directory).
 E2E_FAIL_FAST=1
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo-monte-carlo "$@"
@@ -63,26 +63,15 @@ grep -q "station keeping on the odometry, docking in transit across a current" "
   --output-dir "$WORK/no-odometry" > /dev/null 2> "$WORK/err" || fail "--no-station-keeping run: $(cat "$WORK/err")"
 grep -q "no station keeping, no docking in transit" "$WORK/no-odometry/summary.md" ||
   fail "summary.md does not say --no-station-keeping --no-dock-in-transit: $(head -1 "$WORK/no-odometry/summary.md")"
-# The whole mission on a short fixed-seed run (320x240, clear still water, starts 2-2.5 m with the target out of
-# view, the default behaviour): each method must find the target by searching and dock in both runs (measured: 2/2
-# each).
-out="$WORK/mission"
-"$BIN" --runs 2 --seed 3 --methods ssl,apriltag,truth --small --start-range 2,2.5 --water clear --max-current 0 \
-  --time-limit 90 --threads 2 --quiet --output-dir "$out" > "$WORK/log-mission" 2> "$WORK/err" \
-  || fail "mission run exit code $?: $(cat "$WORK/err")"
-for method in ssl apriltag truth; do
-  grep -q "^| $method | all | 2/2 | " "$out/summary.md" || fail "$method did not dock 2/2: $(cat "$out/summary.md")"
+# The rendered methods on a 5 s run (320x240, the target out of view at the start): one row each, and each finds
+# the target by searching (measured: first detection at 1.0 s for SSL, 1.4 s for AprilTag). Whether they dock is
+# servo_monte_carlo_mission.sh's check.
+out="$WORK/rendered"
+"$BIN" --runs 1 --seed 3 --methods ssl,apriltag --small --start-range 2,2.5 --water clear --max-current 0 \
+  --time-limit 5 --threads 2 --quiet --output-dir "$out" > /dev/null 2> "$WORK/err" \
+  || fail "rendered run exit code $?: $(cat "$WORK/err")"
+for method in ssl apriltag; do
+  grep -q "^0,$method,clear," "$out/runs.csv" || fail "no $method row: $(cat "$out/runs.csv")"
 done
-awk -F, 'NR > 1 && $17 + 0 <= 0 { exit 1 }' "$out/runs.csv" || fail "a target seen at the start: $(cat "$out/runs.csv")"
-# Docking in transit with the perfect sensor, currents to 0.2 m/s: 4/4 docked (3/4 with station keeping alone,
-# one run never holding the stand-off: measured).
-out="$WORK/transit"
-"$BIN" --runs 4 --methods truth --max-current 0.2 --time-limit 120 --threads 2 \
-  --quiet --output-dir "$out" > "$WORK/log-transit" 2> "$WORK/err" || fail "transit run exit code $?: $(cat "$WORK/err")"
-grep -q "docking in transit across a current" "$out/summary.md" || fail "summary.md does not say docking in transit"
-grep -q "^| truth | all | 4/4 | " "$out/summary.md" || fail "transit: truth did not dock 4/4: $(cat "$out/summary.md")"
-out="$WORK/no-transit"
-"$BIN" --runs 4 --methods truth --max-current 0.2 --no-dock-in-transit --time-limit 120 --threads 2 \
-  --quiet --output-dir "$out" > /dev/null 2> "$WORK/err" || fail "no-transit run exit code $?: $(cat "$WORK/err")"
-grep -q "^| truth | all | 3/4 | " "$out/summary.md" || fail "station keeping alone: expected 3/4: $(cat "$out/summary.md")"
+awk -F, 'NR > 1 && $17 + 0 <= 0 { exit 1 }' "$out/runs.csv" || fail "a method did not find the target: $(cat "$out/runs.csv")"
 e2e_finish
