@@ -7,7 +7,8 @@
 #   --runs N           instead of a time, stop each target after N executions (a long campaign: see doc/fuzzing.md)
 #   --regression-only  only run the committed corpora
 #   TARGET             fuzz_target_file, fuzz_camera_file, ... (default: all those built)
-# Exits non-zero on the first crash, leak, sanitizer report or timeout; the reproducer is in build-fuzz/runs/.
+# Runs as many targets at a time as there are cores. Exits non-zero if a target crashed, leaked, had a sanitizer
+# report or a timeout (the first such in the targets' order); the reproducer is in build-fuzz/runs/.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$VISP_SSL_ROOT"
@@ -49,9 +50,11 @@ dict_of() {
 
 build=build-fuzz
 rm -f "$build/build.log"
+# Line tables (-g1) are all a finding's stack trace needs to name files and lines (scripts/test.sh says why not -g).
 run_logged "$build/build.log" cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
   -DCMAKE_CXX_COMPILER=clang++-14 -DVISP_SSL_BUILD_FUZZERS=ON -DVISP_SSL_SANITIZE=OFF -DVISP_SSL_BUILD_TESTS=OFF \
-  -DVISP_SSL_BUILD_TUTORIALS=OFF -DVISP_SSL_BUILD_BENCHMARKS=OFF
+  -DVISP_SSL_BUILD_TUTORIALS=OFF -DVISP_SSL_BUILD_BENCHMARKS=OFF \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
 # The targets this configuration builds (fuzz_rosbag only with the ROS packages): fuzz/CMakeLists.txt lists them.
 mapfile -t built <"$build/fuzz/targets.txt"
 if [ ${#targets[@]} -eq 0 ]; then
@@ -67,21 +70,22 @@ run_logged "$build/build.log" cmake --build "$build" -j"$JOBS" --target "${targe
 
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
-for t in "${targets[@]}"; do
-  bin="$build/fuzz/$t"
-  work="$build/runs/$t"
+# One target: its committed corpus as a regression, then (unless --regression-only) the fuzzing. Its report goes
+# to stdout and stderr; the exit status says whether it passed.
+fuzz_one() {
+  local t=$1 bin="$build/fuzz/$1" work="$build/runs/$1" start dict execs limit
   rm -rf "$work"
-  mkdir -p "$work/corpus"
+  mkdir -p "$work/corpus" || return 1
   # Regression: every committed input once.
   start=$SECONDS
   "$bin" -runs=0 "fuzz/corpus/$t" >"$work/regression.log" 2>&1 || {
     tail -n 40 "$work/regression.log" >&2
     echo "fuzz.sh: $t: the committed corpus fails (log: $work/regression.log)" >&2
-    exit 1
+    return 1
   }
   echo "fuzz.sh: $t: corpus of $(ls "fuzz/corpus/$t" | wc -l) inputs passes ($((SECONDS - start)) s)"
-  [ "$regressionOnly" -eq 1 ] && continue
-  cp "fuzz/corpus/$t"/* "$work/corpus/"
+  [ "$regressionOnly" -eq 1 ] && return 0
+  cp "fuzz/corpus/$t"/* "$work/corpus/" || return 1
   dict=$(dict_of "$t")
   limit=(-max_total_time="$seconds")
   [ -n "$runs" ] && limit=(-runs="$runs")
@@ -91,8 +95,28 @@ for t in "${targets[@]}"; do
     -max_len=65536 -print_final_stats=1 corpus >fuzz.log 2>&1) || {
     tail -n 60 "$work/fuzz.log" >&2
     echo "fuzz.sh: $t: finding (log and reproducer in $work)" >&2
-    exit 1
+    return 1
   }
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/fuzz.log" | grep -o '[0-9]*$' || echo "?")
   echo "fuzz.sh: $t: no finding in $((SECONDS - start)) s, $execs executions"
+}
+
+# Each target is one process on one core: JOBS of them run at a time. Their reports are printed in the targets'
+# order once all have finished; the first that failed sets the exit status.
+mkdir -p "$build/runs"
+for t in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do sleep 0.2; done
+  (
+    set +e
+    fuzz_one "$t" >"$build/runs/$t.report" 2>&1
+    echo $? >"$build/runs/$t.status"
+  ) &
+done
+wait
+for t in "${targets[@]}"; do
+  cat "$build/runs/$t.report"
+  if [ "$(cat "$build/runs/$t.status")" != 0 ]; then
+    echo "fuzz.sh: $t failed (report: $build/runs/$t.report)" >&2
+    exit 1
+  fi
 done

@@ -72,10 +72,12 @@ if [ "$sanitize" -eq 1 ]; then
   phase "configure and build, ASan+UBSan (build-asan/)"
   rm -f build-asan/build.log
   # Line tables (-g1) are all a sanitizer report needs to name each frame's function, file and line; full debug
-  # information makes each object more than twice as large and its compilation a quarter to a third slower.
+  # information makes each object more than twice as large and its compilation a quarter to a third slower. -O1, as
+  # the sanitizers' documentation advises: on 2 cores it builds in 4 min 9 s against 5 min 46 s at -O2 and runs the
+  # tests in 4 min 31 s against 4 min 3 s (2026-12-06, commit 938e081).
   run_logged build-asan/build.log cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVISP_SSL_SANITIZE=ON \
     -DVISP_SSL_BUILD_TESTS=ON -DVISP_SSL_BUILD_TUTORIALS=ON -DVISP_SSL_BUILD_BENCHMARKS=OFF \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
   run_logged build-asan/build.log cmake --build build-asan -j"$JOBS"
 
   phase "ctest, ASan+UBSan"
