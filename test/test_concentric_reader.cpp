@@ -278,3 +278,95 @@ TEST(ConcentricReader, EqualRingsTellBlurredBullsEyesApart)
   }
   EXPECT_GE(passing, 5);
 }
+
+TEST(ConcentricReader, BlurredRingModelReadsFaintBlurredLandmarks)
+{
+  // doc/detector.md: B of 12 to 20 px on sand, ink of albedo 0.8 on paper of 0.85 (15 noise sigmas of contrast),
+  // blurred by 1.5 to 2 px, face-on and 40 degrees off its normal: the outer-ring tests read no ring, the
+  // blurred-ring model reads each within 10 % of its radius, its centre within 0.15 of it.
+  vpSSLConcentricReader off = reader(), on = reader();
+  on.setBlurredRingModel(true);
+  EXPECT_FALSE(off.getBlurredRingModel());
+  const double cases[4][3] = {{0., 5.3, 2.}, {0., 6.5, 1.5}, {40., 4., 2.}, {40., 6.5, 1.5}}; // tilt, depth, sigma
+  for (const auto &c : cases) {
+    vpSSLCorpusViewParams p = view(vpMath::rad(c[0]), c[1], c[2]);
+    p.background = vpSSLCorpusViewParams::SAND;
+    p.ink = 0.8;
+    p.readNoise = 0.004;
+    vpSSLCorpusView v(vpSSLTarget::ssl3a3());
+    vpSSLCorpusPhotos none;
+    v.render(p, &sheet(), none);
+    const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
+    const std::string what =
+        "tilt " + std::to_string(c[0]) + " B " + std::to_string(B.a) + " px, sigma " + std::to_string(c[2]);
+    vpSSLLandmark a, b;
+    a.u = b.u = B.u + 0.8;
+    a.v = b.v = B.v - 0.6;
+    EXPECT_FALSE(off.read(v.getImage(), a)) << what << ": read R " << a.radius;
+    ASSERT_TRUE(on.read(v.getImage(), b)) << what << ", stage " << on.getStage();
+    EXPECT_NEAR(b.radius / B.a, 1., 0.1) << what;
+    EXPECT_LT(std::hypot(b.u - B.u, b.v - B.v), 0.15 * B.a) << what;
+    EXPECT_GE(on.getSimilarity(), 0.945) << what;
+  }
+}
+
+TEST(ConcentricReader, BlurredRingModelAddsNoReadingOnDiscsBullseyesAndChessboards)
+{
+  // The shapes of ReadsNothingOnDiscsBullseyesAndChessboards, sharp and blurred by 1.5 and 2.5 px, at full and at a
+  // tenth of the contrast, with noise: the blurred-ring model reads none that the outer-ring tests do not (they read a
+  // few bull's-eyes of rings 3 to 4.5 px wide among them, as they read every blurred bull's-eye whose outer rings
+  // follow s_p, doc/detector.md).
+  vpSSLConcentricReader r = reader(), off = reader();
+  r.setBlurredRingModel(true);
+  const int N = 201, c = 100;
+  unsigned int state = 12345u;
+  auto noise = [&]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / (1u << 24) - 0.5; // uniform in [-0.5, 0.5)
+  };
+  for (int kind = 0; kind < 4; ++kind) {
+    for (double size : {6., 9., 14., 22., 35.}) {
+      for (double sigma : {0., 1.5, 2.5}) {
+        for (double dark : {30., 200.}) {
+          vpImage<double> D(N, N);
+          for (int v = 0; v < N; ++v) {
+            for (int u = 0; u < N; ++u) {
+              const double rho = std::hypot(u - c, v - c);
+              bool isDark = false;
+              switch (kind) {
+              case 0:
+                isDark = rho < size;
+                break;
+              case 1:
+                isDark = rho >= size;
+                break;
+              case 2:
+                isDark = rho < 5 * size / 2. && static_cast<int>(rho / (size / 2.)) % 2 == 0;
+                break;
+              default:
+                isDark =
+                    ((static_cast<int>(std::floor((u - c) / size)) + static_cast<int>(std::floor((v - c) / size))) &
+                     1) != 0;
+              }
+              D[v][u] = isDark ? dark : 220.;
+            }
+          }
+          vpImage<double> B = D;
+          if (sigma > 0.) {
+            vpImageFilter::gaussianBlur(D, B, 2 * static_cast<unsigned int>(std::ceil(3. * sigma)) + 1, sigma);
+          }
+          vpImage<unsigned char> I(N, N);
+          for (unsigned int i = 0; i < I.getSize(); ++i) {
+            I.bitmap[i] = static_cast<unsigned char>(std::min(255., std::max(0., B.bitmap[i] + 4. * noise() + 0.5)));
+          }
+          vpSSLLandmark l, k;
+          l.u = k.u = c + 0.7;
+          l.v = k.v = c - 0.4;
+          const bool read = r.read(I, l), readOff = off.read(I, k);
+          EXPECT_TRUE(!read || readOff) << "kind " << kind << " size " << size << " sigma " << sigma << " dark " << dark
+                                        << ": read R " << l.radius;
+        }
+      }
+    }
+  }
+}

@@ -55,6 +55,7 @@ Options:
   --decimation D     vpSSLDetector::setDecimation (1 or 2, default 1).
   --small-landmarks  vpSSLDetector::setSmallLandmarkMode(true).
   --equal-rings      vpSSLDetector::setEqualRingCheck(true).
+  --blur-model       vpSSLDetector::setBlurredRingModel(true).
   --apriltag         Also render every view with an AprilTag 36h11 (id 0, 0.2376 m side,
                      centred where the SSL sheet is) instead of the SSL sheet, and run
                      vpDetectorAprilTag (36h11, quad decimate 2, one thread) on it: the tables
@@ -69,7 +70,7 @@ struct Options
   unsigned int views = 200, negatives = 50, threads = 1, saveImages = 0, saveMisses = 0, decimation = 1;
   unsigned long long seed = 1;
   std::string outputDir = "corpus-out";
-  bool small = false, equalRings = false, apriltag = false;
+  bool small = false, equalRings = false, blurModel = false, apriltag = false;
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -112,6 +113,8 @@ bool parse(int argc, char **argv, Options &o)
       o.small = true;
     } else if (a == "--equal-rings") {
       o.equalRings = true;
+    } else if (a == "--blur-model") {
+      o.blurModel = true;
     } else if (a == "--apriltag") {
       o.apriltag = true;
     } else {
@@ -176,6 +179,7 @@ void configure(vpSSLDetector &d, const Options &o)
   d.setDecimation(o.decimation);
   d.setSmallLandmarkMode(o.small);
   d.setEqualRingCheck(o.equalRings);
+  d.setBlurredRingModel(o.blurModel);
 }
 } // namespace
 
@@ -261,7 +265,8 @@ int main(int argc, char **argv)
   std::cout << "## Detector recall on the independent corpus\n\n"
             << "Views " << o.views << ", negatives " << o.negatives << ", seed " << o.seed << ", detector: decimation "
             << o.decimation << (o.small ? ", small-landmark mode" : "") << (o.equalRings ? ", equal-ring check" : "")
-            << ", " << photos.size() << " photos; wall time " << seconds << " s on " << o.threads << " thread(s).\n\n";
+            << (o.blurModel ? ", blurred-ring model" : "") << ", " << photos.size() << " photos; wall time " << seconds
+            << " s on " << o.threads << " thread(s).\n\n";
   evaluator.printTables(std::cout);
 
   const std::string csv = o.outputDir + "/corpus.csv";

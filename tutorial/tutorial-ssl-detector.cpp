@@ -60,6 +60,8 @@ Options:
                       the edge of the range.
   --equal-rings       Also turn away landmarks whose rings are better explained by rings of
                       one width (a blurred bull's-eye; off by default, doc/detector.md).
+  --blur-model        Also read faint blurred landmarks by comparing their ring profile with
+                      the rings' blurred model (off by default, doc/detector.md).
   --decimation D      1 (default) or 2: with 2, the matching function runs on the image
                       decimated twice (the fast mode, for landmarks of about 25 px and more),
                       the rings are still read at full resolution.
@@ -212,7 +214,7 @@ int run(int argc, char **argv)
 {
   std::string input, outputDir;
   ssltut::CameraTargetOptions camera;
-  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = false;
+  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = false, blurModel = false;
   unsigned int window = 40, threads = 0, decimation = 1;
   double threshold = 0.07;
   long maxFrames = -1;
@@ -239,6 +241,8 @@ int run(int argc, char **argv)
       smallLandmarks = true;
     } else if (a == "--equal-rings") {
       equalRings = true;
+    } else if (a == "--blur-model") {
+      blurModel = true;
     } else if (a == "--decimation") {
       decimation = static_cast<unsigned int>(integer(value(), 1, 2));
     } else if (a == "--no-normalize") {
@@ -320,6 +324,7 @@ int run(int argc, char **argv)
   detector.setThreshold(threshold);
   detector.setSmallLandmarkMode(smallLandmarks);
   detector.setEqualRingCheck(equalRings);
+  detector.setBlurredRingModel(blurModel);
   detector.setDecimation(decimation);
   detector.setBrightnessNormalization(normalize);
   detector.setNbThreads(threads);

@@ -67,6 +67,29 @@ const int kFoldBins = 20;
 const double kSolidShare = 0.5;
 // Alternating ring pairs needed, counted inwards from the outer ring.
 const int kMinPairs = 2;
+// The blurred-ring model (setBlurredRingModel()): blur sigmas tried (px), the copy's edge moved by up to
+// kModelShifts steps of kModelShift periods about the phase's, and what a copy must reach to be read.
+const double kModelSigmas[] = {0.4, 0.7, 1., 1.4, 2., 2.8, 4.};
+const int kModelShifts = 4;
+const double kModelShift = 0.025;
+const double kModelCorrelation = 0.945;
+const double kModelDiscMargin = 0.1;
+const double kModelSectorCorrelation = 0.3;
+const double kModelSectorShare = 0.75;
+const double kModelMinRadius = 8.;
+const double kModelSnr = 2.;
+
+// The rings' radial profile at rho, blurred by a Gaussian of sigma (same units): white paper (1) outside the outer
+// radius R, then each printed edge inwards a blurred step, down at R, up at R sqrt(p), down at R p, ... (edgeRatio =
+// sqrt(p)), down to edges under a fifth of sigma, which the blur has merged.
+double blurredRings(double rho, double R, double sigma, double edgeRatio)
+{
+  double m = 1., edge = R;
+  for (int j = 0; j < 64 && edge > 0.2 * sigma; ++j, edge *= edgeRatio) {
+    m += (j % 2 == 0 ? -0.5 : 0.5) * std::erfc((rho - edge) / (M_SQRT2 * sigma));
+  }
+  return m;
+}
 // Smallest inner disc (px, R p^2) whose own fit gives the centre, and the largest move of the centre it may make
 // (share of that disc).
 const double kMinInnerDisc = 8.;
@@ -107,7 +130,7 @@ const RayDirections &rayDirections()
 
 vpSSLConcentricReader::vpSSLConcentricReader()
     : m_p(0.5), m_logStep(std::log(2.)), m_minRadius(4.), m_maxRadius(300.), m_stage(0), m_quality(0.),
-      m_similarity(0.), m_profileTauA(0.), m_profileTauR(0.), m_tau0(0.), m_nbBins(0)
+      m_similarity(0.), m_profileTauA(0.), m_profileTauR(0.), m_blurredRingModel(false), m_tau0(0.), m_nbBins(0)
 {
 }
 
@@ -702,6 +725,9 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     outer = std::exp(tEdges * L);
     break;
   }
+  if (outer == 0. && m_blurredRingModel) {
+    outer = blurredOuter(level, phase, tauHigh, best, m_similarity);
+  }
   if (outer == 0.) {
     return false;
   }
@@ -740,4 +766,143 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     landmark.directionalRadius[d] = outer / std::sqrt(best.q[0] * x * x + 2. * best.q[1] * x * y + best.q[2] * y * y);
   }
   return landmark.radius <= m_maxRadius && landmark.minorRadius >= kMinMinorRadius;
+}
+
+double vpSSLConcentricReader::modelCorrelation(const double *level, int sector, double R, double sigma, bool rings,
+                                               double pxPerRho, double &amplitude) const
+{
+  // Normalised correlation of the profile (all around, or one sector) with the rings' profile blurred by sigma
+  // (rho units), or with a blurred solid disc, over rho from max(2 sigma, 1.5 px) to 1.1 R. amplitude: the profile's
+  // grey levels per unit of the model (paper minus ink). -1 where fewer than a period of bins are seen.
+  const double rhoLow = std::max(2. * sigma, 1.5 / pxPerRho), rhoHigh = 1.1 * R, edgeRatio = std::sqrt(m_p);
+  double sl = 0., sm = 0., sll = 0., smm = 0., slm = 0.;
+  int n = 0;
+  for (int bin = 0; bin < m_nbBins; ++bin) {
+    double l = level[bin];
+    if (sector >= 0) {
+      l = m_count[bin][sector] > 0 ? m_sum[bin][sector] / m_count[bin][sector] : -1.;
+    }
+    const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+    if (l < 0. || rho < rhoLow || rho > rhoHigh) {
+      continue;
+    }
+    const double m =
+        rings ? blurredRings(rho, R, sigma, edgeRatio) : 1. - 0.5 * std::erfc((rho - R) / (M_SQRT2 * sigma));
+    sl += l;
+    sm += m;
+    sll += l * l;
+    smm += m * m;
+    slm += l * m;
+    ++n;
+  }
+  amplitude = 0.;
+  if (n < kBinsPerPeriod) {
+    return -1.;
+  }
+  const double vl = sll - sl * sl / n, vm = smm - sm * sm / n, c = slm - sl * sm / n;
+  if (!(vl > 0. && vm > 1e-9)) {
+    return -1.;
+  }
+  amplitude = c / vm;
+  return c / std::sqrt(vl * vm);
+}
+
+double vpSSLConcentricReader::blurredOuter(const double *level, double phase, double tauHigh, const Fit &f,
+                                           double &correlation) const
+{
+  // The rings' profile is in rho, the radius of the fitted ellipses; a pixel is about (det Q)^(1/4) = 1 of it, the
+  // geometric mean of the ellipse's semi-axes per unit of rho.
+  Eigen::Matrix2d Q;
+  Q << f.q[0], f.q[1], f.q[1], f.q[2];
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(Q);
+  const double pxPerRho = std::pow(solver.eigenvalues()(0) * solver.eigenvalues()(1), -0.25);
+  for (int k = static_cast<int>(std::floor(tauHigh - phase)); k >= -2; --k) {
+    // The blur first, at the phase's edge; then the edge about it at that blur.
+    double best = -1., bestR = 0., bestSigma = 0., amplitude = 0., a = 0.;
+    auto tryEdge = [&](double tR, double sigmaPx) {
+      const double R = std::exp(tR * m_logStep);
+      if (tR > tauHigh - 0.15 || R * pxPerRho < kModelMinRadius || R < m_minRadius) {
+        return;
+      }
+      const double c = modelCorrelation(level, -1, R, sigmaPx / pxPerRho, true, pxPerRho, a);
+      if (c > best) {
+        best = c;
+        bestR = R;
+        bestSigma = sigmaPx / pxPerRho;
+        amplitude = a;
+      }
+    };
+    for (double sigmaPx : kModelSigmas) {
+      tryEdge(phase + k, sigmaPx);
+    }
+    const double sigmaPx = bestSigma * pxPerRho;
+    for (int j = -kModelShifts; j <= kModelShifts && best > -1.; ++j) {
+      if (j != 0) {
+        tryEdge(phase + k + j * kModelShift, sigmaPx);
+      }
+    }
+    if (best < kModelCorrelation || amplitude <= 0.) {
+      continue;
+    }
+    // Blur that greys every ring leaves a dark disc, which a dark blob matches as well.
+    double disc = -1.;
+    for (double scale : {0.9, 1., 1.1}) {
+      for (double s : kModelSigmas) {
+        disc = std::max(disc, modelCorrelation(level, -1, scale * bestR, s / pxPerRho, false, pxPerRho, a));
+      }
+    }
+    if (best - disc < kModelDiscMargin) {
+      continue;
+    }
+    // The rings all around: most directions follow the model on their own.
+    int seen = 0, good = 0;
+    for (int s = 0; s < kSectors; ++s) {
+      const double c = modelCorrelation(level, s, bestR, bestSigma, true, pxPerRho, a);
+      if (c == -1. && a == 0.) {
+        continue;
+      }
+      ++seen;
+      good += c >= kModelSectorCorrelation ? 1 : 0;
+    }
+    if (seen < kSectors - 2 || good < kModelSectorShare * seen) {
+      continue;
+    }
+    // The model's variance over the bins against the noise of the profile's mean, from the spread of the sectors.
+    const double rhoLow = std::max(2. * bestSigma, 1.5 / pxPerRho), edgeRatio = std::sqrt(m_p);
+    double noise = 0., sm = 0., smm = 0.;
+    int n = 0;
+    for (int bin = 0; bin < m_nbBins; ++bin) {
+      const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+      if (level[bin] < 0. || rho < rhoLow || rho > 1.1 * bestR) {
+        continue;
+      }
+      double ls[kSectors], mean = 0.;
+      int ns = 0;
+      for (int s = 0; s < kSectors; ++s) {
+        if (m_count[bin][s] > 0) {
+          ls[ns] = m_sum[bin][s] / m_count[bin][s];
+          mean += ls[ns++];
+        }
+      }
+      if (ns < 2) {
+        continue;
+      }
+      mean /= ns;
+      double spread = 0.;
+      for (int j = 0; j < ns; ++j) {
+        spread += (ls[j] - mean) * (ls[j] - mean);
+      }
+      noise += spread / (ns - 1) / ns;
+      const double m = blurredRings(rho, bestR, bestSigma, edgeRatio);
+      sm += m;
+      smm += m * m;
+      ++n;
+    }
+    if (n < 2 || !(amplitude * amplitude * (smm - sm * sm / n) >= kModelSnr * noise)) {
+      continue;
+    }
+    correlation = best;
+    return bestR;
+  }
+  return 0.;
 }

@@ -52,6 +52,7 @@ public:
   void setRadiusSweep(bool enable) { m_radiusSweep = enable; }
   void setSmallLandmarkMode(bool enable);
   void setEqualRingCheck(bool enable) { m_equalRingCheck = enable; }
+  void setBlurredRingModel(bool enable) { m_concentricReader.setBlurredRingModel(enable); }
   void setShortWindow(unsigned int w);
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
 
@@ -62,6 +63,7 @@ public:
   bool getRadiusSweep() const { return m_radiusSweep; }
   bool getSmallLandmarkMode() const { return m_upsample; }
   bool getEqualRingCheck() const { return m_equalRingCheck; }
+  bool getBlurredRingModel() const { return m_concentricReader.getBlurredRingModel(); }
   unsigned int getShortWindow() const { return m_shortWindow; }
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
   bool getLastSearchWasFull() const { return m_lastSearchWasFull; }

@@ -79,6 +79,14 @@ bool vpSSLDetector::getEqualRingCheck() const
 {
   return m_impl->getEqualRingCheck();
 }
+void vpSSLDetector::setBlurredRingModel(bool enable)
+{
+  m_impl->setBlurredRingModel(enable);
+}
+bool vpSSLDetector::getBlurredRingModel() const
+{
+  return m_impl->getBlurredRingModel();
+}
 void vpSSLDetector::setShortWindow(unsigned int w)
 {
   m_impl->setShortWindow(w);

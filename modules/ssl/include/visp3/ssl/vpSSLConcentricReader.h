@@ -53,7 +53,8 @@ public:
   //! Quality of the last fit: gradient energy explained by the concentric ellipses, in [0, 1].
   double getQuality() const { return m_quality; }
 
-  //! Correlation of the last read's ring profile with the square wave \f$ s_p \f$ (1: a sharp landmark).
+  //! Correlation of the last read's ring profile with the square wave \f$ s_p \f$ (1: a sharp landmark), or with
+  //! its blurred model where the blurred-ring model read it (setBlurredRingModel()).
   double getSimilarity() const { return m_similarity; }
 
   /*!
@@ -73,6 +74,23 @@ public:
   */
   bool isEqualRings() const;
 
+  /*!
+    Whether read() falls back on a model of the blurred rings where its outer-ring tests find no ring (off by
+    default). Those tests compare mean levels with a floor of 4 grey levels and ask each direction for the outer
+    pair's contrast: a landmark of 10-20 px whose rings, blurred by 1-2.5 px and seen through water, keep only a few
+    grey levels of contrast, fails them although its profile is plain. The model is the profile of \f$ s_p \f$
+    blurred by a Gaussian of 0.4 to 4 px, its outer edge at each p-similar copy the rings' phase allows (outermost
+    first, within a tenth of a period): a copy is read when, over its radii from twice the blur (1.5 px at least) to
+    1.1 R, it correlates with the profile by 0.945 or more, by 0.1 more than a blurred solid disc of about that
+    radius (blur that has greyed every ring leaves a disc, which anything dark and round matches), with 0.3 or more
+    in three quarters of the directions seen (six of eight at least), a radius of 8 px or more and the model's
+    variance twice the noise of the profile's mean (the spread of the directions). doc/detector.md gives what it adds
+    on the independent corpus.
+  */
+  void setBlurredRingModel(bool enable) { m_blurredRingModel = enable; }
+  //! Whether read() falls back on the blurred-ring model (setBlurredRingModel()).
+  bool getBlurredRingModel() const { return m_blurredRingModel; }
+
 private:
   struct Fit
   {
@@ -87,6 +105,9 @@ private:
   void allAround(double *level) const;
   double profileSimilarity(const double *level, double tauA, double tR) const;
   bool equalRings(const double *level, double tauA, double tR) const;
+  double blurredOuter(const double *level, double phase, double tauHigh, const Fit &f, double &correlation) const;
+  double modelCorrelation(const double *level, int sector, double R, double sigma, bool rings, double pxPerRho,
+                          double &amplitude) const;
 
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius
@@ -96,6 +117,7 @@ private:
   double m_similarity;
   // The span in periods of the last similarity()'s profile (isEqualRings()); m_profileTauR 0 when there is none.
   double m_profileTauA, m_profileTauR;
+  bool m_blurredRingModel;
 
   // Radial profile: bins of kBinsPerPeriod per period of log radius from m_tau0, per sector of directions.
   static constexpr int kSectors = 8;
