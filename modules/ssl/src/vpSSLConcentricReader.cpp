@@ -267,7 +267,7 @@ bool vpSSLConcentricReader::readProfile(const vpImage<unsigned char> &I, const F
   std::fill(&m_count[0][0], &m_count[0][0] + kMaxBins * kSectors, static_cast<unsigned short>(0));
   const double W = I.getWidth() - 1., H = I.getHeight() - 1.;
   // The bins' radii are the same on every ray.
-  double rho[kMaxBins];
+  double *rho = m_rho;
   for (int bin = 0; bin < m_nbBins; ++bin) {
     rho[bin] = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
   }
@@ -782,7 +782,7 @@ double vpSSLConcentricReader::modelCorrelation(const double *level, int sector, 
     if (sector >= 0) {
       l = m_count[bin][sector] > 0 ? m_sum[bin][sector] / m_count[bin][sector] : -1.;
     }
-    const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+    const double rho = m_rho[bin];
     if (l < 0. || rho < rhoLow || rho > rhoHigh) {
       continue;
     }
@@ -872,7 +872,7 @@ double vpSSLConcentricReader::blurredOuter(const double *level, double phase, do
     double noise = 0., sm = 0., smm = 0.;
     int n = 0;
     for (int bin = 0; bin < m_nbBins; ++bin) {
-      const double rho = std::exp((m_tau0 + (bin + 0.5) / kBinsPerPeriod) * m_logStep);
+      const double rho = m_rho[bin];
       if (level[bin] < 0. || rho < rhoLow || rho > 1.1 * bestR) {
         continue;
       }

@@ -126,6 +126,7 @@ private:
   int m_nbBins;
   float m_sum[kMaxBins][kSectors];
   unsigned short m_count[kMaxBins][kSectors];
+  double m_rho[kMaxBins]; // each bin's radius, the same on every ray
 };
 
 #endif
