@@ -61,8 +61,8 @@ Options:
                      outer ring), with misses.csv (one row per missed landmark).
   --decimation D     vpSSLDetector::setDecimation (1 or 2, default 1).
   --small-landmarks  vpSSLDetector::setSmallLandmarkMode(true).
-  --equal-rings      vpSSLDetector::setEqualRingCheck(true).
-  --blur-model       vpSSLDetector::setBlurredRingModel(true).
+  --no-equal-rings   vpSSLDetector::setEqualRingCheck(false) (on by default).
+  --no-blur-model    vpSSLDetector::setBlurredRingModel(false) (on by default).
   --apriltag         Also render every view with an AprilTag 36h11 (id 0, 0.2376 m side,
                      centred where the SSL sheet is) instead of the SSL sheet, and run
                      vpDetectorAprilTag (36h11, quad decimate 2, one thread) on it: the tables
@@ -77,7 +77,7 @@ struct Options
   unsigned int views = 200, negatives = 50, threads = 1, saveImages = 0, saveMisses = 0, decimation = 1;
   unsigned long long seed = 1;
   std::string outputDir = "corpus-out";
-  bool small = false, equalRings = false, blurModel = false, apriltag = false, explainMisses = false;
+  bool small = false, equalRings = true, blurModel = true, apriltag = false, explainMisses = false;
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -118,10 +118,10 @@ bool parse(int argc, char **argv, Options &o)
       o.outputDir = argv[++i];
     } else if (a == "--small-landmarks") {
       o.small = true;
-    } else if (a == "--equal-rings") {
-      o.equalRings = true;
-    } else if (a == "--blur-model") {
-      o.blurModel = true;
+    } else if (a == "--no-equal-rings") {
+      o.equalRings = false;
+    } else if (a == "--no-blur-model") {
+      o.blurModel = false;
     } else if (a == "--explain-misses") {
       o.explainMisses = true;
     } else if (a == "--apriltag") {
@@ -335,9 +335,9 @@ int main(int argc, char **argv)
 
   std::cout << "## Detector recall on the independent corpus\n\n"
             << "Views " << o.views << ", negatives " << o.negatives << ", seed " << o.seed << ", detector: decimation "
-            << o.decimation << (o.small ? ", small-landmark mode" : "") << (o.equalRings ? ", equal-ring check" : "")
-            << (o.blurModel ? ", blurred-ring model" : "") << ", " << photos.size() << " photos; wall time " << seconds
-            << " s on " << o.threads << " thread(s).\n\n";
+            << o.decimation << (o.small ? ", small-landmark mode" : "") << (o.equalRings ? "" : ", no equal-ring check")
+            << (o.blurModel ? "" : ", no blurred-ring model") << ", " << photos.size() << " photos; wall time "
+            << seconds << " s on " << o.threads << " thread(s).\n\n";
   evaluator.printTables(std::cout);
 
   const std::string csv = o.outputDir + "/corpus.csv";

@@ -58,10 +58,10 @@ Options:
                       1.5 times the matching work of the default, whose short window already
                       reads from about 8 px of radius; doc/detector.md). Use it for targets at
                       the edge of the range.
-  --equal-rings       Also turn away landmarks whose rings are better explained by rings of
-                      one width (a blurred bull's-eye; off by default, doc/detector.md).
-  --blur-model        Also read faint blurred landmarks by comparing their ring profile with
-                      the rings' blurred model (off by default, doc/detector.md).
+  --no-equal-rings    Keep landmarks whose rings are better explained by rings of one width
+                      (vpSSLDetector::setEqualRingCheck(false); on by default, doc/detector.md).
+  --no-blur-model     Do not read faint blurred landmarks from their ring profile's blurred
+                      model (vpSSLDetector::setBlurredRingModel(false); doc/detector.md).
   --decimation D      1 (default) or 2: with 2, the matching function runs on the image
                       decimated twice (the fast mode, for landmarks of about 25 px and more),
                       the rings are still read at full resolution.
@@ -214,7 +214,7 @@ int run(int argc, char **argv)
 {
   std::string input, outputDir;
   ssltut::CameraTargetOptions camera;
-  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = false, blurModel = false;
+  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = true, blurModel = true;
   unsigned int window = 40, threads = 0, decimation = 1;
   double threshold = 0.07;
   long maxFrames = -1;
@@ -239,10 +239,10 @@ int run(int argc, char **argv)
       threshold = number(value());
     } else if (a == "--small-landmarks") {
       smallLandmarks = true;
-    } else if (a == "--equal-rings") {
-      equalRings = true;
-    } else if (a == "--blur-model") {
-      blurModel = true;
+    } else if (a == "--no-equal-rings") {
+      equalRings = false;
+    } else if (a == "--no-blur-model") {
+      blurModel = false;
     } else if (a == "--decimation") {
       decimation = static_cast<unsigned int>(integer(value(), 1, 2));
     } else if (a == "--no-normalize") {

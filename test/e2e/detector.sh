@@ -6,7 +6,7 @@ E2E_FAIL_FAST=1
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector "$@"
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
-for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks --equal-rings --blur-model \
+for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks --no-equal-rings --no-blur-model \
            --decimation --threshold --no-normalize --threads --max-frames --help; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done

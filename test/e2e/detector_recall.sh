@@ -7,7 +7,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector-recall
 if "$BIN" --help >help.txt 2>help.err; then
   missing=""
   for o in --views --negatives --seed --threads --output-dir --save-images --save-misses --explain-misses \
-           --decimation --small-landmarks --equal-rings --blur-model --apriltag --help; do
+           --decimation --small-landmarks --no-equal-rings --no-blur-model --apriltag --help; do
     grep -q -- "$o" help.txt || missing="$missing $o"
   done
   [ -z "$missing" ] && pass "--help lists every option" || fail "--help does not list:$missing"

@@ -114,13 +114,14 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
       m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
       m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_matchHalf(halfWindow(40), target.getP()),
-      m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(false), m_threshold(0.07), m_planner(), m_noRois(),
+      m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(true), m_threshold(0.07), m_planner(), m_noRois(),
       m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
   m_allAroundTried.reserve(kAllAroundBudget);
   m_radiusEstimator.setP(target.getP());
   m_concentricReader.setP(target.getP());
+  m_concentricReader.setBlurredRingModel(true);
 }
 
 void vpSSLDetectionPipeline::setWindow(unsigned int w)

@@ -153,25 +153,23 @@ public:
   //! Whether the small-landmark mode is on.
   bool getSmallLandmarkMode() const;
   /*!
-    Equal-ring check (default off). Every landmark read already has to follow \f$ s_p \f$ over its resolved rings
+    Equal-ring check (default on). Every landmark read already has to follow \f$ s_p \f$ over its resolved rings
     (vpSSLConcentricReader::similarity() of 0.5 or more), which a bull's-eye of equal-width rings fails when sharp;
-    blurred, its outer rings can pass. With the check on, a landmark whose ring profile rings of one width explain
-    better, while its inner rings keep their contrast, is turned away as well
-    (vpSSLConcentricReader::isEqualRings()): on the negatives of the independent corpus it removes four of the eight
-    false targets (blurred bull's-eyes of 19 to 42 px), and it also turns away some landmarks read at twice their
-    radius (doc/detector.md). Off by default until the closed-loop figures are measured with it.
+    blurred, its outer rings can pass. The check turns away as well a landmark whose ring profile rings of one width
+    explain better, while its inner rings keep their contrast (vpSSLConcentricReader::isEqualRings()): on the
+    negatives of the independent corpus it removes four of the eight false targets without it (blurred bull's-eyes of
+    19 to 42 px), and it also turns away some landmarks read at twice their radius (doc/detector.md).
   */
   void setEqualRingCheck(bool enable);
   //! Whether the equal-ring check is on (setEqualRingCheck()).
   bool getEqualRingCheck() const;
   /*!
-    Blurred-ring model (default off). Where the all-around reading of a candidate (vpSSLConcentricReader) fits the
+    Blurred-ring model (default on). Where the all-around reading of a candidate (vpSSLConcentricReader) fits the
     rings' ellipses but its outer-ring tests, which need a few grey levels of contrast in nearly every direction, find
     no ring, the profile is compared with \f$ s_p \f$ blurred by 0.4 to 4 px and with a blurred solid disc
     (vpSSLConcentricReader::setBlurredRingModel()): faint landmarks of 8 to 40 px, blurred by 1 to 2.5 px, are read.
-    On the independent corpus it finds 1 to 2 % more B and 2 to 3 % more S1 and S2, loses none, and adds one false
-    target on 3,400 negatives, for 2 to 4 % more time per image (doc/detector.md). Off by default until the
-    closed-loop figures are measured with it.
+    On the independent corpus it finds 1 to 2 % more B and 2 to 3 % more S1 and S2 than without it, loses none, and
+    adds one false target on 3,400 negatives, for a few per cent more time per image (doc/detector.md).
   */
   void setBlurredRingModel(bool enable);
   //! Whether the blurred-ring model is on (setBlurredRingModel()).
