@@ -1,5 +1,6 @@
 // libFuzzer target: the detector on arbitrary image bytes and sizes. The first byte picks the mode (and, by its
-// second bit, whether the equal-ring check is on):
+// second and third bits, turns the equal-ring check and the blurred-ring model off: with both bits clear the
+// detector keeps its defaults):
 // - even: the rest is an image file (PNG, JPEG, PNM, BMP or anything), read by vpSSLImageIo (headers that
 //   declare huge sizes, truncated and corrupt data), then detected, on one thread, in its top-left 320x240 px at
 //   most (the committed photograph of ssl3-a3 whole);
@@ -50,7 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   const uint8_t mode = in.byte();
   vpImage<unsigned char> I;
   try {
-    detector.setEqualRingCheck(mode & 2);
+    detector.setEqualRingCheck(!(mode & 2));
+    detector.setBlurredRingModel(!(mode & 4));
     if ((mode & 1) == 0) {
       const std::filesystem::path path = sslfuzz::scratch() / "image";
       sslfuzz::writeFile(path, in.rest(), in.left());
