@@ -72,25 +72,42 @@ void gaussianBlur(std::vector<float> &plane, unsigned int w, unsigned int h, dou
   }
   std::vector<float> tmp(plane.size());
   const int W = static_cast<int>(w), H = static_cast<int>(h);
+  // Each output sums its taps in the same order (i ascending from 0) as a plain loop over the taps would; the taps
+  // are the outer loop and the pixels the inner one, so that the pixels vectorise, and the border clamp is left to
+  // the pixels within r of the ends.
+  const int x0 = std::min(r, W), x1 = std::max(x0, W - r);
 #pragma omp parallel for schedule(static)
   for (int y = 0; y < H; ++y) {
     const float *row = &plane[static_cast<size_t>(y) * w];
+    float *out = &tmp[static_cast<size_t>(y) * w];
     for (int x = 0; x < W; ++x) {
+      if (x >= x0 && x < x1) {
+        continue;
+      }
       float acc = 0.f;
       for (int i = -r; i <= r; ++i) {
         acc += k[i + r] * row[std::min(std::max(x + i, 0), W - 1)];
       }
-      tmp[static_cast<size_t>(y) * w + x] = acc;
+      out[x] = acc;
+    }
+    std::fill(out + x0, out + x1, 0.f);
+    for (int i = -r; i <= r; ++i) {
+      const float ki = k[i + r];
+      for (int x = x0; x < x1; ++x) {
+        out[x] += ki * row[x + i];
+      }
     }
   }
 #pragma omp parallel for schedule(static)
   for (int y = 0; y < H; ++y) {
-    for (int x = 0; x < W; ++x) {
-      float acc = 0.f;
-      for (int i = -r; i <= r; ++i) {
-        acc += k[i + r] * tmp[static_cast<size_t>(std::min(std::max(y + i, 0), H - 1)) * w + x];
+    float *out = &plane[static_cast<size_t>(y) * w];
+    std::fill(out, out + W, 0.f);
+    for (int i = -r; i <= r; ++i) {
+      const float ki = k[i + r];
+      const float *src = &tmp[static_cast<size_t>(std::min(std::max(y + i, 0), H - 1)) * w];
+      for (int x = 0; x < W; ++x) {
+        out[x] += ki * src[x];
       }
-      plane[static_cast<size_t>(y) * w + x] = acc;
     }
   }
 }
