@@ -54,8 +54,9 @@ void checkNonNegative(double x, const char *what)
   }
 }
 
-// Separable Gaussian blur of one w x h float plane, borders replicated.
-void gaussianBlur(std::vector<float> &plane, unsigned int w, unsigned int h, double sigma)
+// Separable Gaussian blur of one w x h float plane, borders replicated; tmp is the caller's scratch plane (w x h),
+// reused from one call to the next.
+void gaussianBlur(std::vector<float> &plane, std::vector<float> &tmp, unsigned int w, unsigned int h, double sigma)
 {
   if (sigma <= 0.) {
     return;
@@ -70,7 +71,7 @@ void gaussianBlur(std::vector<float> &plane, unsigned int w, unsigned int h, dou
   for (float &x : k) {
     x = static_cast<float>(x / sum);
   }
-  std::vector<float> tmp(plane.size());
+  tmp.resize(plane.size());
   const int W = static_cast<int>(w), H = static_cast<int>(h);
   // Each output sums its taps in the same order (i ascending from 0) as a plain loop over the taps would; the taps
   // are the outer loop and the pixels the inner one, so that the pixels vectorise, and the border clamp is left to
@@ -344,7 +345,7 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
   }
   // Each pixel's direct signal is spread with the blur of its own range (scattering happens along its
   // own path), by linear interpolation between the two nearest levels of the stack.
-  std::vector<float> plane(n);
+  std::vector<float> plane(n), scratch;
   for (size_t l = 0; l < kNbBlurLevels; ++l) {
     if (!used[l]) {
       continue;
@@ -354,7 +355,7 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
         const float wl = level[p] == l ? 1.f - wHigh[p] : (level[p] + 1u == l ? wHigh[p] : 0.f);
         plane[p] = wl * direct[c * n + p];
       }
-      gaussianBlur(plane, w, h, kBlurLevels[l]);
+      gaussianBlur(plane, scratch, w, h, kBlurLevels[l]);
       for (size_t p = 0; p < n; ++p) {
         rgb[c * n + p] += plane[p];
       }
