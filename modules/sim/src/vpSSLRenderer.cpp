@@ -14,6 +14,8 @@
 #include <visp3/core/vpPixelMeterConversion.h>
 #include <visp3/ssl/vpSSLPattern.h>
 
+#include "vpSSLQuantise.h"
+
 namespace {
 // A ray whose direction has |dz| below this (in normalised units, |d| >= 1) is grazing the plane so
 // closely that the hit point is farther than any target could be seen: treat it as parallel.
@@ -510,8 +512,7 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
         reflectance[idx] = static_cast<float>(mean);
       }
       if (grey) {
-        const double g = std::round(255. * mean);
-        grey[idx] = static_cast<unsigned char>(g < 0. ? 0. : (g > 255. ? 255. : g));
+        grey[idx] = vpSSLQuantise::quantise(255. * mean);
       }
       if (range) {
         double x = 0., y = 0., t = 0.;

@@ -15,6 +15,8 @@
 #include <visp3/core/vpGaussRand.h>
 #include <visp3/core/vpImageConvert.h>
 
+#include "vpSSLQuantise.h"
+
 namespace {
 // ln(1 / 0.02): the 2 % contrast threshold of the human (and Secchi-disc) visibility definition.
 const double kLn50 = std::log(50.);
@@ -393,8 +395,7 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
     for (int c = 0; c < 3; ++c) {
       const double y = gain * rgb[c * n + p];
       const double sd = std::sqrt(std::max(0., m_noiseA * y + m_noiseB));
-      const double g = std::round(255. * (y + sd * noise()));
-      out[c] = static_cast<unsigned char>(g < 0. ? 0. : (g > 255. ? 255. : g));
+      out[c] = vpSSLQuantise::quantise(255. * (y + sd * noise()));
     }
     I.bitmap[p] = vpRGBa(out[0], out[1], out[2], 255);
   }
