@@ -12,9 +12,9 @@
 #include <sstream>
 
 #include <visp3/core/vpException.h>
-#include <visp3/core/vpGaussRand.h>
 #include <visp3/core/vpImageConvert.h>
 
+#include "vpSSLGaussRand.h"
 #include "vpSSLQuantise.h"
 
 namespace {
@@ -389,7 +389,8 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
     gain = mean > 0. ? std::min(std::max(m_autoExposureMean / mean, 1. / 64.), 64.) : 64.;
   }
   I.resize(reflectance.getHeight(), reflectance.getWidth());
-  vpGaussRand noise(1., 0., seed);
+  // vpGaussRand(1, 0, seed)'s draws, inline (vpSSLGaussRand.h).
+  vpSSLGaussRand noise(1., 0., seed);
   for (size_t p = 0; p < n; ++p) {
     unsigned char out[3];
     for (int c = 0; c < 3; ++c) {
