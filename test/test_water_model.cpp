@@ -3,6 +3,7 @@
   turbidity, the presets mean the visibility they are named by, and an image is reproducible.
 */
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,39 @@ TEST(WaterModel, SameSeedSameImage)
   water.apply(reflectance, range, kCam, 0.3, 8, C);
   EXPECT_TRUE(A == B);
   EXPECT_FALSE(A == C);
+}
+
+TEST(WaterModel, ImageDoesNotDependOnThePreviousFrames)
+{
+  // apply() keeps its planes from one call to the next in each thread: a frame after others of other sizes, with
+  // more or fewer pixels of open water, is the frame a thread that never rendered gives.
+  struct Frame
+  {
+    unsigned int width, height;
+    double distance;
+  };
+  // Clear water blurs little (the lowest blur levels are in use), turbid water much.
+  const std::vector<Frame> frames = {{160, 120, 1.}, {160, 120, 8.}, {80, 60, 2.}, {160, 120, 1.}, {160, 120, 30.}};
+  for (size_t i = 0; i < 2 * frames.size(); ++i) {
+    const vpSSLWaterModel water = vpSSLWaterModel::preset(i < frames.size() ? "clear" : "turbid");
+    const Frame &f = frames[i % frames.size()];
+    const vpCameraParameters cam(2. * f.width, 2. * f.width, 0.5 * f.width, 0.5 * f.height);
+    vpSSLRenderer renderer(cam, f.width, f.height);
+    renderer.setSupersampling(2);
+    vpImage<float> reflectance, range;
+    renderer.render(sslt::lookAt(f.distance), reflectance, range);
+    vpImage<vpRGBa> colour, freshColour;
+    vpImage<unsigned char> grey, freshGrey;
+    water.apply(reflectance, range, cam, 0.1 * i, static_cast<long>(i), colour);
+    water.apply(reflectance, range, cam, 0.1 * i, static_cast<long>(i), grey);
+    std::thread fresh([&]() {
+      water.apply(reflectance, range, cam, 0.1 * i, static_cast<long>(i), freshColour);
+      water.apply(reflectance, range, cam, 0.1 * i, static_cast<long>(i), freshGrey);
+    });
+    fresh.join();
+    EXPECT_TRUE(colour == freshColour) << "frame " << i;
+    EXPECT_TRUE(grey == freshGrey) << "frame " << i;
+  }
 }
 
 TEST(WaterModel, RedIsAbsorbedFirst)

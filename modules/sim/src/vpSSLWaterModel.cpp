@@ -115,6 +115,26 @@ void gaussianBlur(std::vector<float> &plane, std::vector<float> &tmp, unsigned i
   }
 }
 
+// The per-frame planes of apply() and radiance(), kept from one frame to the next by each thread that renders: the
+// simulators call apply() every step with the same image size, and allocating and zeroing some 10 MB per frame would
+// cost page faults and memset every frame. One per thread keeps apply() safe to call concurrently on the same model;
+// every plane is fully written before it is read.
+struct Workspace
+{
+  std::vector<float> rgb;            // radiance, planar: channel, pixel
+  std::vector<float> direct;         // direct signal before the forward-scatter blur, planar
+  std::vector<float> wHigh;          // weight of the pixel's upper blur level
+  std::vector<unsigned char> level;  // the pixel's lower blur level
+  std::vector<float> plane, scratch; // one channel's direct signal at one blur level, and the blur's scratch
+  vpImage<vpRGBa> colour;            // the colour image the grey one is converted from
+};
+
+Workspace &workspace()
+{
+  thread_local Workspace w;
+  return w;
+}
+
 std::string jsonArray(const std::array<double, 3> &v)
 {
   std::ostringstream os;
@@ -296,10 +316,14 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
 
   // Backscatter goes straight into rgb (planar: channel, pixel); the direct signal is kept apart with,
   // per pixel, its forward-scatter blur as a position on the blur stack (level and weight of level + 1).
-  std::vector<float> direct(3 * n, 0.f), wHigh(n, 0.f);
-  std::vector<unsigned char> level(n, 0);
-  std::vector<bool> used(kNbBlurLevels, false);
-  rgb.assign(3 * n, 0.f);
+  Workspace &ws = workspace();
+  std::vector<float> &direct = ws.direct, &wHigh = ws.wHigh;
+  std::vector<unsigned char> &level = ws.level;
+  direct.resize(3 * n);
+  wHigh.resize(n);
+  level.resize(n);
+  bool used[kNbBlurLevels] = {};
+  rgb.resize(3 * n);
   for (unsigned int v = 0; v < h; ++v) {
     for (unsigned int u = 0; u < w; ++u) {
       const size_t p = static_cast<size_t>(v) * w + u;
@@ -308,7 +332,11 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
         z = m_backgroundRange;
       }
       if (!std::isfinite(z)) {
+        // Pure veiling light: no direct signal, at blur level 0 with no weight above it.
+        level[p] = 0;
+        wHigh[p] = 0.f;
         for (int c = 0; c < 3; ++c) {
+          direct[c * n + p] = 0.f;
           rgb[c * n + p] = static_cast<float>(m_veiling[c] * ambient[c]);
         }
         continue;
@@ -347,7 +375,8 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
   }
   // Each pixel's direct signal is spread with the blur of its own range (scattering happens along its
   // own path), by linear interpolation between the two nearest levels of the stack.
-  std::vector<float> plane(n), scratch;
+  std::vector<float> &plane = ws.plane, &scratch = ws.scratch;
+  plane.resize(n);
   for (size_t l = 0; l < kNbBlurLevels; ++l) {
     if (!used[l]) {
       continue;
@@ -375,7 +404,7 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
                       "size",
                       reflectance.getWidth(), reflectance.getHeight(), range.getWidth(), range.getHeight());
   }
-  std::vector<float> rgb;
+  std::vector<float> &rgb = workspace().rgb;
   radiance(reflectance, range, cam, t, rgb);
   const size_t n = reflectance.getSize();
   double gain = m_exposure;
@@ -398,14 +427,19 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
       const double sd = std::sqrt(std::max(0., m_noiseA * y + m_noiseB));
       out[c] = vpSSLQuantise::quantise(255. * (y + sd * noise()));
     }
-    I.bitmap[p] = vpRGBa(out[0], out[1], out[2], 255);
+    // The channels written one by one: vpRGBa's assignment is an out-of-line library call.
+    vpRGBa &pixel = I.bitmap[p];
+    pixel.R = out[0];
+    pixel.G = out[1];
+    pixel.B = out[2];
+    pixel.A = 255;
   }
 }
 
 void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<float> &range,
                             const vpCameraParameters &cam, double t, long seed, vpImage<unsigned char> &I) const
 {
-  vpImage<vpRGBa> colour;
+  vpImage<vpRGBa> &colour = workspace().colour;
   apply(reflectance, range, cam, t, seed, colour);
   vpImageConvert::convert(colour, I);
 }
