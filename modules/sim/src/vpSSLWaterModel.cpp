@@ -126,6 +126,7 @@ struct Workspace
   std::vector<float> wHigh;          // weight of the pixel's upper blur level
   std::vector<unsigned char> level;  // the pixel's lower blur level
   std::vector<float> plane, scratch; // one channel's direct signal at one blur level, and the blur's scratch
+  std::vector<float> weight;         // the pixels' weights at one blur level
   vpImage<vpRGBa> colour;            // the colour image the grey one is converted from
 };
 
@@ -375,16 +376,21 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
   }
   // Each pixel's direct signal is spread with the blur of its own range (scattering happens along its
   // own path), by linear interpolation between the two nearest levels of the stack.
-  std::vector<float> &plane = ws.plane, &scratch = ws.scratch;
+  // A pixel's weight at a level is the same for the three channels: computed once per level.
+  std::vector<float> &plane = ws.plane, &scratch = ws.scratch, &weight = ws.weight;
   plane.resize(n);
+  weight.resize(n);
   for (size_t l = 0; l < kNbBlurLevels; ++l) {
     if (!used[l]) {
       continue;
     }
+    for (size_t p = 0; p < n; ++p) {
+      weight[p] = level[p] == l ? 1.f - wHigh[p] : (level[p] + 1u == l ? wHigh[p] : 0.f);
+    }
     for (int c = 0; c < 3; ++c) {
+      const float *dc = &direct[c * n];
       for (size_t p = 0; p < n; ++p) {
-        const float wl = level[p] == l ? 1.f - wHigh[p] : (level[p] + 1u == l ? wHigh[p] : 0.f);
-        plane[p] = wl * direct[c * n + p];
+        plane[p] = weight[p] * dc[p];
       }
       gaussianBlur(plane, scratch, w, h, kBlurLevels[l]);
       for (size_t p = 0; p < n; ++p) {
