@@ -64,6 +64,14 @@ int mirrorIndex(long i, int n)
   return static_cast<int>(m < n ? m : 2L * n - 1 - m);
 }
 
+// Whether num / den can be > 0, for a den that is neither 0 nor NaN: only when both have the same strict sign (the
+// quotient of those may still underflow to 0, which the caller's own test on it rejects). Zeros, NaN and opposite
+// signs give a quotient that is <= 0 or NaN: the division, the slowest operation of a ray, is then left out.
+inline bool maybePositiveQuotient(double num, double den)
+{
+  return (num > 0. && den > 0.) || (num < 0. && den < 0.);
+}
+
 // Sub-pixel offset from the pixel centre: the n x n grid that tiles the pixel's unit square.
 inline double subOffset(unsigned int i, unsigned int n)
 {
@@ -417,7 +425,7 @@ double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3]
   } what = MISS;
   double best = std::numeric_limits<double>::infinity();
   double X = 0., Y = 0., a = 0., b = 0., footprint = 0.;
-  if (std::fabs(d[2]) > kParallelEps) {
+  if (std::fabs(d[2]) > kParallelEps && maybePositiveQuotient(-p[2], d[2])) {
     const double ts = -p[2] / d[2];
     const double Xs = p[0] + ts * d[0], Ys = p[1] + ts * d[1];
     if (ts > 0. && std::fabs(Xs - s.sheetX) <= s.halfW && std::fabs(Ys - s.sheetY) <= s.halfH) {
@@ -429,8 +437,9 @@ double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3]
   }
   if (s.backdrop) {
     const double den = s.bn[0] * d[0] + s.bn[1] * d[1] + s.bn[2] * d[2];
-    if (std::fabs(den) > kParallelEps) {
-      const double tb = (s.bn[0] * (s.bo[0] - p[0]) + s.bn[1] * (s.bo[1] - p[1]) + s.bn[2] * (s.bo[2] - p[2])) / den;
+    const double num = s.bn[0] * (s.bo[0] - p[0]) + s.bn[1] * (s.bo[1] - p[1]) + s.bn[2] * (s.bo[2] - p[2]);
+    if (std::fabs(den) > kParallelEps && maybePositiveQuotient(num, den)) {
+      const double tb = num / den;
       if (tb > 0. && tb < best) {
         what = BACKDROP;
         best = tb;
@@ -446,8 +455,9 @@ double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3]
   double dn = 0.;
   if (surface && s.surface) {
     dn = s.sn[0] * d[0] + s.sn[1] * d[1] + s.sn[2] * d[2];
-    if (dn > kParallelEps) {
-      const double tw = (s.sd - (s.sn[0] * p[0] + s.sn[1] * p[1] + s.sn[2] * p[2])) / dn;
+    const double num = s.sd - (s.sn[0] * p[0] + s.sn[1] * p[1] + s.sn[2] * p[2]);
+    if (dn > kParallelEps && num > 0.) {
+      const double tw = num / dn;
       if (tw > 0. && tw < best) {
         what = SURFACE;
         best = tw;
@@ -491,6 +501,26 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
   const double invSamples = 1. / (n * n);
   const bool hasBackgroundImage = m_backgroundImage.getSize() != 0;
   const int height = static_cast<int>(m_height);
+  // Without distortion a sub-pixel's normalised point is (m_subX[column], m_subY[row]) exactly (normalisedRay()'s
+  // factor is 1 + 0 (x^2 + y^2) = 1 for the finite x^2 + y^2 of any camera), so the products of R (x, y, 1) are those
+  // of its column and of its row: tabulated once per frame, each ray direction is then R[k][0] x + R[k][1] y + R[k][2]
+  // summed in the same order from the same products.
+  const bool separable = m_rayCache.empty() && m_kdu == 0.;
+  std::vector<double> colProducts, rowProducts;
+  if (separable) {
+    colProducts.resize(3 * m_subX.size());
+    rowProducts.resize(3 * m_subY.size());
+    for (size_t c = 0; c < m_subX.size(); ++c) {
+      for (unsigned int k = 0; k < 3; ++k) {
+        colProducts[3 * c + k] = scene.R[k][0] * m_subX[c];
+      }
+    }
+    for (size_t r = 0; r < m_subY.size(); ++r) {
+      for (unsigned int k = 0; k < 3; ++k) {
+        rowProducts[3 * r + k] = scene.R[k][1] * m_subY[r];
+      }
+    }
+  }
 #pragma omp parallel for schedule(dynamic, 4)
   for (int v = 0; v < height; ++v) {
     for (unsigned int u = 0; u < m_width; ++u) {
@@ -498,7 +528,16 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
       double sum = 0.;
       for (unsigned int j = 0; j < n; ++j) {
         for (unsigned int i = 0; i < n; ++i) {
-          double x = 0., y = 0., t = 0.;
+          double t = 0.;
+          if (separable) {
+            const double *cp = &colProducts[3 * (static_cast<size_t>(u) * n + i)];
+            const double *rp = &rowProducts[3 * (static_cast<size_t>(v) * n + j)];
+            const double d[3] = {cp[0] + rp[0] + scene.R[0][2], cp[1] + rp[1] + scene.R[1][2],
+                                 cp[2] + rp[2] + scene.R[2][2]};
+            sum += shade(scene, scene.o, d, background, true, 0., t);
+            continue;
+          }
+          double x = 0., y = 0.;
           normalisedRay(u, static_cast<unsigned int>(v), i, j, x, y);
           const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
                                scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
