@@ -426,19 +426,31 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
   I.resize(reflectance.getHeight(), reflectance.getWidth());
   // vpGaussRand(1, 0, seed)'s draws, inline (vpSSLGaussRand.h).
   vpSSLGaussRand noise(1., 0., seed);
-  for (size_t p = 0; p < n; ++p) {
-    unsigned char out[3];
-    for (int c = 0; c < 3; ++c) {
-      const double y = gain * rgb[c * n + p];
-      const double sd = std::sqrt(std::max(0., m_noiseA * y + m_noiseB));
-      out[c] = vpSSLQuantise::quantise(255. * (y + sd * noise()));
+  // A block's deviates are drawn first (pixel after pixel, R, G, B: the order of the draws is the image's), then
+  // used: the draws, with their libm calls and data-dependent rejections, and the pixels' arithmetic each run in a
+  // loop of their own, without the other's register spills.
+  const size_t kBlock = 256;
+  double deviates[3 * kBlock];
+  for (size_t p0 = 0; p0 < n; p0 += kBlock) {
+    const size_t nb = std::min(kBlock, n - p0);
+    for (size_t k = 0; k < 3 * nb; ++k) {
+      deviates[k] = noise();
     }
-    // The channels written one by one: vpRGBa's assignment is an out-of-line library call.
-    vpRGBa &pixel = I.bitmap[p];
-    pixel.R = out[0];
-    pixel.G = out[1];
-    pixel.B = out[2];
-    pixel.A = 255;
+    for (size_t k = 0; k < nb; ++k) {
+      const size_t p = p0 + k;
+      unsigned char out[3];
+      for (int c = 0; c < 3; ++c) {
+        const double y = gain * rgb[c * n + p];
+        const double sd = std::sqrt(std::max(0., m_noiseA * y + m_noiseB));
+        out[c] = vpSSLQuantise::quantise(255. * (y + sd * deviates[3 * k + c]));
+      }
+      // The channels written one by one: vpRGBa's assignment is an out-of-line library call.
+      vpRGBa &pixel = I.bitmap[p];
+      pixel.R = out[0];
+      pixel.G = out[1];
+      pixel.B = out[2];
+      pixel.A = 255;
+    }
   }
 }
 
