@@ -229,10 +229,12 @@ TEST(DetectorCorpus, SameSeedSameView)
 
 TEST(DetectorCorpus, RecallTableByMinorSemiAxisOverBlur)
 {
-  // Three eligible B: b / sigma = 5 (found), 50 (missed) and no blur at all (found, in the top bin).
+  // Three eligible B: b / sigma = 5 (found), 50 (missed) and no blur at all (found, in the top bin), the last seen
+  // 70 degrees off its normal, which the second table leaves out.
   vpSSLCorpusEvaluator evaluator;
   const double blurs[3] = {2., 0.2, 0.};
   const bool found[3] = {true, false, true};
+  const double angles[3] = {30., 60., 70.};
   for (int k = 0; k < 3; ++k) {
     vpSSLCorpusViewResult r;
     r.index = static_cast<unsigned int>(k);
@@ -243,6 +245,7 @@ TEST(DetectorCorpus, RecallTableByMinorSemiAxisOverBlur)
     t.wholeInFrame = t.centreInFrame = t.isEllipse = true;
     t.contrastOverNoise = 10.;
     t.blurSigma = blurs[k];
+    t.viewAngle = angles[k];
     r.truth.push_back(t);
     vpSSLCorpusLandmarkResult res;
     res.found = found[k];
@@ -252,14 +255,24 @@ TEST(DetectorCorpus, RecallTableByMinorSemiAxisOverBlur)
   std::ostringstream os;
   evaluator.printTables(os);
   const std::string md = os.str();
-  const size_t table = md.find("#### Recall by minor semi-axis / blur sigma");
-  ASSERT_NE(table, std::string::npos);
-  const size_t next = md.find("####", table + 4);
-  const std::string rows = md.substr(table, next == std::string::npos ? std::string::npos : next - table);
+  // The rows of the table headed exactly by \e title (empty if there is none).
+  auto tableRows = [&md](const std::string &title) {
+    const size_t table = md.find("#### Recall by " + title + "\n");
+    if (table == std::string::npos)
+      return std::string();
+    const size_t next = md.find("####", table + 4);
+    return md.substr(table, next == std::string::npos ? std::string::npos : next - table);
+  };
+  const std::string rows = tableRows("minor semi-axis / blur sigma");
+  ASSERT_FALSE(rows.empty()) << md;
   EXPECT_NE(rows.find("| 0-4 | - | - | - |"), std::string::npos) << rows;
   EXPECT_NE(rows.find("| 4-8 | 100.0 % (1) | - | - |"), std::string::npos) << rows;
   EXPECT_NE(rows.find("| 16-32 | - | - | - |"), std::string::npos) << rows;
   EXPECT_NE(rows.find("| 32+ | 50.0 % (2) | - | - |"), std::string::npos) << rows;
+  const std::string near = tableRows("minor semi-axis / blur sigma, view angle <= 60 deg");
+  ASSERT_FALSE(near.empty()) << md;
+  EXPECT_NE(near.find("| 4-8 | 100.0 % (1) | - | - |"), std::string::npos) << near;
+  EXPECT_NE(near.find("| 32+ | 0.0 % (1) | - | - |"), std::string::npos) << near;
 }
 
 TEST(DetectorCorpus, DefaultDetectorKeepsItsRecallAndFindsNoTargetInNegatives)

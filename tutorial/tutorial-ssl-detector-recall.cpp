@@ -36,9 +36,9 @@ const char *kUsage = R"(Usage: tutorial-ssl-detector-recall [options]
 Renders random underwater views of the ssl3-a3 sheet (the independent corpus of visp_ssl_bench:
 its own sheet raster, camera, water and sensor, nothing shared with vpSSLRenderer) and negatives
 without it, runs vpSSLDetector on each and prints the recall of B, S1 and S2 by view angle,
-radius, range / visibility, blur, minor semi-axis over blur, contrast over noise, water,
-surroundings, occlusion and JPEG quality (Markdown), the centre and radius errors, false
-landmarks and false targets.
+radius, range / visibility, blur, minor semi-axis over blur (all views, and within 60 degrees of
+the normal), contrast over noise, water, surroundings, occlusion and JPEG quality (Markdown),
+the centre and radius errors, false landmarks and false targets.
 
 Options:
   --views N          Views with the target (default 200).

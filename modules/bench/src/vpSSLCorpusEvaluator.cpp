@@ -244,6 +244,8 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
     std::vector<Bin> bins;
     std::function<double(const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &)> value;
     bool radius, contrast;
+    // Only landmarks seen at most this far off their normal (deg).
+    double maxViewAngle = 1e300;
   };
   const double inf = 1e300;
   std::vector<Table> tables = {
@@ -283,6 +285,16 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
        },
        false,
        false},
+      // The same within 60 degrees of the normal, where an oblique view's foreshortening does not add to the
+      // blur's toll.
+      {"minor semi-axis / blur sigma, view angle <= 60 deg",
+       {{"0-4", 0, 4}, {"4-8", 4, 8}, {"8-16", 8, 16}, {"16-32", 16, 32}, {"32+", 32, inf}},
+       [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) {
+         return t.b / std::max(t.blurSigma, 1e-6);
+       },
+       false,
+       false,
+       60.},
       {"contrast / noise sigma",
        {{"0-3", 0, 3}, {"3-5", 3, 5}, {"5-10", 5, 10}, {"10-20", 10, 20}, {"20-50", 20, 50}, {"50+", 50, inf}},
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.contrastOverNoise; },
@@ -330,7 +342,7 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
           for (size_t i = 0; i < r.truth.size(); ++i) {
             const vpSSLCorpusLandmarkTruth &t = r.truth[i];
             if (t.name != name || !t.wholeInFrame || t.centreOccluded || (!tb.radius && t.a < 8.) ||
-                (!tb.contrast && t.contrastOverNoise < 3.))
+                (!tb.contrast && t.contrastOverNoise < 3.) || t.viewAngle > tb.maxViewAngle)
               continue;
             const double x = tb.value(r, t);
             if (x < b.lo || x >= b.hi)
@@ -349,7 +361,7 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
             continue;
           const vpSSLCorpusLandmarkTruth &t = r.truth[0];
           if (!t.wholeInFrame || t.centreOccluded || (!tb.radius && t.a < 8.) ||
-              (!tb.contrast && t.contrastOverNoise < 3.))
+              (!tb.contrast && t.contrastOverNoise < 3.) || t.viewAngle > tb.maxViewAngle)
             continue;
           const double x = tb.value(r, t);
           if (x < b.lo || x >= b.hi)
