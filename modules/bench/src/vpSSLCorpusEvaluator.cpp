@@ -248,6 +248,19 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
     double maxViewAngle = 1e300;
   };
   const double inf = 1e300;
+  // Ring widths are proportional to the minor semi-axis: this ratio says how many blur sigmas the rings span across
+  // their narrowest direction, which decides whether they survive the blur. A view without blur falls in the top bin.
+  const Table minorOverBlur = {"minor semi-axis / blur sigma",
+                               {{"0-4", 0, 4}, {"4-8", 4, 8}, {"8-16", 8, 16}, {"16-32", 16, 32}, {"32+", 32, inf}},
+                               [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) {
+                                 return t.b / std::max(t.blurSigma, 1e-6);
+                               },
+                               false,
+                               false};
+  // The same within 60 degrees of the normal, where an oblique view's foreshortening does not add to the blur's toll.
+  Table minorOverBlurNear = minorOverBlur;
+  minorOverBlurNear.title += ", view angle <= 60 deg";
+  minorOverBlurNear.maxViewAngle = 60.;
   std::vector<Table> tables = {
       {"view angle (deg)",
        {{"0-20", 0, 20}, {"20-40", 20, 40}, {"40-55", 40, 55}, {"55-60", 55, 60}, {"60-70", 60, 70}, {"70+", 70, inf}},
@@ -275,26 +288,8 @@ void vpSSLCorpusEvaluator::printTables(std::ostream &os) const
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.blurSigma; },
        false,
        false},
-      // Ring widths are proportional to the minor semi-axis: this ratio says how many blur sigmas the rings
-      // span across their narrowest direction, which decides whether they survive the blur.
-      {"minor semi-axis / blur sigma",
-       {{"0-4", 0, 4}, {"4-8", 4, 8}, {"8-16", 8, 16}, {"16-32", 16, 32}, {"32+", 32, inf}},
-       // A view without blur falls in the top bin.
-       [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) {
-         return t.b / std::max(t.blurSigma, 1e-6);
-       },
-       false,
-       false},
-      // The same within 60 degrees of the normal, where an oblique view's foreshortening does not add to the
-      // blur's toll.
-      {"minor semi-axis / blur sigma, view angle <= 60 deg",
-       {{"0-4", 0, 4}, {"4-8", 4, 8}, {"8-16", 8, 16}, {"16-32", 16, 32}, {"32+", 32, inf}},
-       [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) {
-         return t.b / std::max(t.blurSigma, 1e-6);
-       },
-       false,
-       false,
-       60.},
+      minorOverBlur,
+      minorOverBlurNear,
       {"contrast / noise sigma",
        {{"0-3", 0, 3}, {"3-5", 3, 5}, {"5-10", 5, 10}, {"10-20", 10, 20}, {"20-50", 20, 50}, {"50+", 50, inf}},
        [](const vpSSLCorpusViewResult &, const vpSSLCorpusLandmarkTruth &t) { return t.contrastOverNoise; },
