@@ -68,6 +68,8 @@ Options:
   --methods LIST       Comma-separated among ssl, apriltag, truth, ssl-raw, apriltag-raw
                        (default ssl,apriltag,truth).
   --time-limit S       Simulated seconds per run (default 240).
+  --rate HZ            Control and camera rate (default 5 Hz, in [1, 20]): one image, one detection and one
+                       command per period; the vehicle's dynamics are sub-stepped whatever the rate.
   --start-range MIN,MAX  Camera to target centre at the start (m, default 2,8; 0.5 <= MIN <= MAX <= 30).
   --start-heading DEG  Heading uniform within +-DEG of the direction of the target (default 180, in [0, 180]).
   --water NAME         clear, coastal or mixed (each run draws one of the two, default mixed).
@@ -107,6 +109,7 @@ struct Options : ssltut::ClosedLoopOutputOptions
   std::vector<vpSSLClosedLoop::Method> methods = {vpSSLClosedLoop::Method::Ssl, vpSSLClosedLoop::Method::AprilTag,
                                                   vpSSLClosedLoop::Method::Truth};
   double timeLimit = 240.;
+  double rate = 5.;
   double startRangeMin = 2., startRangeMax = 8.;
   double startHeading = 180.;
   std::string water = "mixed";
@@ -154,6 +157,11 @@ bool parse(int argc, char **argv, Options &o)
       o.timeLimit = parseNumber(a, value());
       if (o.timeLimit <= 0. || o.timeLimit > 3600.) {
         throw UsageError{"--time-limit: expected a value in (0, 3600] s"};
+      }
+    } else if (a == "--rate") {
+      o.rate = parseNumber(a, value());
+      if (!(o.rate >= 1.) || o.rate > 20.) {
+        throw UsageError{"--rate: expected a value in [1, 20] Hz"};
       }
     } else if (a == "--start-range") {
       const std::string v = value();
@@ -292,6 +300,7 @@ Draw makeDraw(long seed, int run, const Options &opt, const vpCameraParameters &
 vpSSLClosedLoop::Scene makeScene(const Draw &d, const Options &opt)
 {
   vpSSLClosedLoop::Scene s;
+  s.timeStep = 1. / opt.rate;
   s.water = d.coastal ? "coastal" : "clear";
   s.standOff = d.coastal ? 1.5 : 2.0;
   s.autoDockHold = opt.dockHold;
@@ -558,8 +567,8 @@ static int run(int argc, char **argv)
      << opt.height << ", " << opt.water << " water, start range " << vpSSLBenchMath::csvNumber(opt.startRangeMin, 1)
      << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m, heading +-"
      << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
-     << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, current up to "
-     << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
+     << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, " << vpSSLBenchMath::csvNumber(opt.rate, 2)
+     << " Hz, current up to " << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
      << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)
      << " m of the stand-off and " << vpSSLBenchMath::csvNumber(opt.dockAngle, 0) << " deg of the optical axis"
      << (opt.stationKeeping ? ", station keeping on the odometry" : ", no station keeping")

@@ -8,7 +8,7 @@ E2E_FAIL_FAST=1
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-servo-monte-carlo "$@"
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
-for opt in --runs --seed --methods --time-limit --max-current --threads --traces --output-dir --width --height \
+for opt in --runs --seed --methods --time-limit --rate --max-current --threads --traces --output-dir --width --height \
            --small --quiet --help --start-range --start-heading --water --station-keeping --dock-in-transit --no-station-keeping --no-dock-in-transit ssl apriltag truth ssl-raw apriltag-raw \
            runs.csv summary.md outcomes.png never-found lost hold-not-reached missed-board collision time-out; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
@@ -18,6 +18,8 @@ expect_error 2 "unknown option" --bogus
 expect_error 2 "--runs" --runs 0
 expect_error 2 "--methods" --methods ssl,sift
 expect_error 2 "--time-limit" --time-limit -1
+expect_error 2 "--rate" --rate 0
+expect_error 2 "--rate" --rate 25
 expect_error 2 "needs a value" --seed
 expect_error 2 "--start-range" --start-range 3,2
 expect_error 2 "empty folder" --output-dir ""
@@ -63,6 +65,13 @@ grep -q "station keeping on the odometry, docking in transit across a current" "
   --output-dir "$WORK/no-odometry" > /dev/null 2> "$WORK/err" || fail "--no-station-keeping run: $(cat "$WORK/err")"
 grep -q "no station keeping, no docking in transit" "$WORK/no-odometry/summary.md" ||
   fail "summary.md does not say --no-station-keeping --no-dock-in-transit: $(head -1 "$WORK/no-odometry/summary.md")"
+# --rate sets the control and camera period: at 2.5 Hz the steps of a trace are 0.4 s apart, and the summary says so.
+"$BIN" --runs 1 --methods truth --time-limit 5 --rate 2.5 --traces --quiet --output-dir "$WORK/rate" > /dev/null \
+  2> "$WORK/err" || fail "--rate 2.5 run: $(cat "$WORK/err")"
+grep -q ", 2.50 Hz," "$WORK/rate/summary.md" || fail "summary.md does not say 2.50 Hz: $(head -1 "$WORK/rate/summary.md")"
+awk -F, 'NR == 2 { t0 = $1 } NR == 3 { t1 = $1 } END { d = t1 - t0; exit !(d > 0.3999 && d < 0.4001) }' \
+  "$WORK/rate/run-0-truth.csv" || fail "--rate 2.5: steps not 0.4 s apart: $(head -3 "$WORK/rate/run-0-truth.csv")"
+grep -q ", 5.00 Hz," "$WORK/out-1/summary.md" || fail "summary.md does not say the default 5 Hz"
 # The rendered methods on a 5 s run (320x240, the target out of view at the start): one row each, and each finds
 # the target by searching (measured: first detection at 1.0 s for SSL, 1.4 s for AprilTag). Whether they dock is
 # servo_monte_carlo_mission.sh's check.
