@@ -72,10 +72,9 @@ TEST(AprilTagBaseline, FindsRenderedA3SheetPose)
   EXPECT_EQ(other.getNbOthers(), 1u);
 }
 
-// Reading a window around the tag (the Monte Carlo's fused AprilTag method) finds the tag exactly when the whole
-// image does, with the same corners to within a fifth of a pixel (AprilTag's quad fit takes near-tied choices that
-// the coordinates' rounding can flip: 0.02 px median, 0.15 px at most over the 230 windowed frames of two clear
-// Monte Carlo runs), and reads the whole image when the window misses the tag or cuts it.
+// Reading a window around the tag (the Monte Carlo's fused AprilTag method) finds the tag the whole
+// image finds, with the same corners to within a fifth of a pixel (AprilTag's quad fit takes near-tied choices that
+// the coordinates' rounding can flip), and reads the whole image when the window misses the tag or cuts it.
 TEST(AprilTagBaseline, WindowGivesTheWholeImageDetection)
 {
   const vpCameraParameters cam(554., 554., 320., 240.);
