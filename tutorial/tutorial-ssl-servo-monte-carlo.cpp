@@ -565,8 +565,11 @@ static int run(int argc, char **argv)
   std::ostringstream md;
   md << "Monte Carlo docking: " << opt.runs << " runs per method, seed " << opt.seed << ", " << opt.width << "x"
      << opt.height << ", " << opt.water << " water, start range " << vpSSLBenchMath::csvNumber(opt.startRangeMin, 1)
-     << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m, heading +-"
-     << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
+     << "-" << vpSSLBenchMath::csvNumber(opt.startRangeMax, 1) << " m"
+     << (opt.water == "clear" || opt.startRangeMax <= coastalVisibility
+             ? std::string()
+             : " (coastal starts capped at the visibility, " + vpSSLBenchMath::csvNumber(coastalVisibility, 1) + " m)")
+     << ", heading +-" << vpSSLBenchMath::csvNumber(opt.startHeading, 0) << " deg, time limit "
      << vpSSLBenchMath::csvNumber(opt.timeLimit, 0) << " s, " << vpSSLBenchMath::csvNumber(opt.rate, 2)
      << " Hz, current up to " << vpSSLBenchMath::csvNumber(opt.maxCurrent, 2) << " m/s, auto-dock after "
      << vpSSLBenchMath::csvNumber(opt.dockHold, 1) << " s within " << vpSSLBenchMath::csvNumber(opt.dockRange, 2)

@@ -72,6 +72,9 @@ grep -q ", 2.50 Hz," "$WORK/rate/summary.md" || fail "summary.md does not say 2.
 awk -F, 'NR == 2 { t0 = $1 } NR == 3 { t1 = $1 } END { d = t1 - t0; exit !(d > 0.3999 && d < 0.4001) }' \
   "$WORK/rate/run-0-truth.csv" || fail "--rate 2.5: steps not 0.4 s apart: $(head -3 "$WORK/rate/run-0-truth.csv")"
 grep -q ", 5.00 Hz," "$WORK/out-1/summary.md" || fail "summary.md does not say the default 5 Hz"
+# The default water is mixed: the summary says that coastal starts stop at the visibility (4 m).
+grep -q "start range 2.0-8.0 m (coastal starts capped at the visibility, 4.0 m)," "$WORK/out-1/summary.md" ||
+  fail "summary.md does not say the coastal cap: $(head -1 "$WORK/out-1/summary.md")"
 # The rendered methods on a 5 s run (320x240, the target out of view at the start): one row each, and each finds
 # the target by searching (measured: first detection at 1.0 s for SSL, 1.4 s for AprilTag). Whether they dock is
 # servo_monte_carlo_mission.sh's check.
