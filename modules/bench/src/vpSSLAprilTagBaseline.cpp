@@ -57,7 +57,7 @@ bool vpSSLAprilTagBaseline::detect(const vpImage<unsigned char> &I, const vpRect
     return detect(I); // the window is the image
   }
   if (right - left > 4 * tile && bottom - top > 4 * tile) {
-    m_window.resize(static_cast<unsigned int>(bottom - top), static_cast<unsigned int>(right - left), false);
+    m_window.resize(static_cast<unsigned int>(bottom - top), static_cast<unsigned int>(right - left));
     for (int i = top; i < bottom; ++i) {
       std::copy(I[i] + left, I[i] + right, m_window[i - top]);
     }
