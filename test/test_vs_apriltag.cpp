@@ -1,5 +1,6 @@
 // Tests of the SSL vs AprilTag benchmark: the AprilTag baseline's pose error on ViSP's own AprilTag
 // benchmark images, and the arithmetic of the report (range bands, rates, range90, percentiles, pose errors).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <visp3/ssl_harness/vpSSLDetectionStats.h>
 #include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 #include <visp3/ssl_sim/vpSSLRenderer.h>
+#include <visp3/ssl_sim/vpSSLWaterModel.h>
 
 namespace {
 const std::string kVispBenchmark = std::string(VISP_SSL_IMAGES_DIR) + "/AprilTag/benchmark/640x480";
@@ -68,6 +70,62 @@ TEST(AprilTagBaseline, FindsRenderedA3SheetPose)
   vpSSLAprilTagBaseline other(vpSSLAprilTagSheet::a3(1), cam);
   EXPECT_FALSE(other.detect(I));
   EXPECT_EQ(other.getNbOthers(), 1u);
+}
+
+// Reading a window around the tag (the Monte Carlo's fused AprilTag method) finds the tag the whole
+// image finds, with the same corners to within a fifth of a pixel (AprilTag's quad fit takes near-tied choices that
+// the coordinates' rounding can flip), and reads the whole image when the window misses the tag or cuts it.
+TEST(AprilTagBaseline, WindowGivesTheWholeImageDetection)
+{
+  const vpCameraParameters cam(554., 554., 320., 240.);
+  const vpSSLAprilTagSheet sheet = vpSSLAprilTagSheet::a3(0);
+  vpSSLRenderer renderer(cam, 640, 480);
+  renderer.setAprilTagSheet(sheet);
+  const vpSSLWaterModel water = vpSSLWaterModel::preset("coastal");
+  const double poses[][6] = {{0.1, -0.05, 2., 170., 10., 5.},   {-0.4, 0.2, 3., 180., -30., 0.},
+                             {0.5, 0.3, 1.5, 160., 20., -20.},  {0., 0., 1., 180., 0., 40.},
+                             {-0.8, -0.5, 3.5, 175., 35., 10.}, {0.2, 0.1, 2.5, 190., -15., 80.}};
+  vpImage<float> reflectance, range;
+  vpImage<unsigned char> I;
+  int nbWindowed = 0;
+  for (size_t k = 0; k < sizeof(poses) / sizeof(poses[0]); ++k) {
+    SCOPED_TRACE("pose " + std::to_string(k));
+    const double *q = poses[k];
+    const vpHomogeneousMatrix cMo(q[0], q[1], q[2], vpMath::rad(q[3]), vpMath::rad(q[4]), vpMath::rad(q[5]));
+    renderer.render(cMo, reflectance, range);
+    water.apply(reflectance, range, cam, 0., static_cast<long>(k), I);
+    vpSSLAprilTagBaseline whole(sheet, cam), windowed(sheet, cam);
+    ASSERT_TRUE(whole.detect(I));
+    const std::vector<vpImagePoint> corners = renderer.projectLandmarks(cMo);
+    double uMin = 1e9, uMax = -1e9, vMin = 1e9, vMax = -1e9;
+    for (const vpImagePoint &c : corners) {
+      uMin = std::min(uMin, c.get_u());
+      uMax = std::max(uMax, c.get_u());
+      vMin = std::min(vMin, c.get_v());
+      vMax = std::max(vMax, c.get_v());
+    }
+    // Around the tag: read in the window when it does not cover the image.
+    const double m = 40.;
+    ASSERT_TRUE(windowed.detect(I, vpRect(vpImagePoint(vMin - m, uMin - m), vpImagePoint(vMax + m, uMax + m))));
+    nbWindowed += windowed.usedWindow() ? 1 : 0;
+    ASSERT_EQ(windowed.getPolygon().size(), 4u);
+    for (size_t i = 0; i < 4; ++i) {
+      EXPECT_LT(vpImagePoint::distance(windowed.getPolygon()[i], whole.getPolygon()[i]), 0.2) << "corner " << i;
+    }
+    EXPECT_LT(vpSSLBenchMath::positionError(windowed.getPose(), whole.getPose()), 0.01);
+    EXPECT_LT(vpSSLBenchMath::angleError(windowed.getPose(), whole.getPose()), 1.);
+    // A window that cuts the tag, and one beside it: the whole image is read.
+    const double uMid = 0.5 * (uMin + uMax);
+    for (const vpRect &r : {vpRect(vpImagePoint(vMin - m, uMin - m), vpImagePoint(vMax + m, uMid)),
+                            vpRect(vpImagePoint(vMin - m, uMax + 30.), vpImagePoint(vMax + m, uMax + 130.))}) {
+      ASSERT_TRUE(windowed.detect(I, r));
+      EXPECT_FALSE(windowed.usedWindow());
+      for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(windowed.getPolygon()[i], whole.getPolygon()[i]);
+      }
+    }
+  }
+  EXPECT_GE(nbWindowed, 4); // the near views' windows cover the image
 }
 
 TEST(BenchmarkArithmetic, BandsCoverZeroToTwelveMetres)

@@ -1,5 +1,6 @@
 #include <visp3/ssl_harness/vpSSLAprilTagBaseline.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -26,9 +27,68 @@ void vpSSLAprilTagBaseline::setQuadDecimate(float d)
 
 bool vpSSLAprilTagBaseline::detect(const vpImage<unsigned char> &I)
 {
+  m_usedWindow = false;
+  m_detector.detect(I);
+  collect(vpImagePoint(0., 0.), m_cam);
+  return m_found;
+}
+
+bool vpSSLAprilTagBaseline::detect(const vpImage<unsigned char> &I, const vpRect &window)
+{
+  // AprilTag thresholds each pixel against the extremes of its 4x4 tile and the 8 tiles around it: a window
+  // on the tile grid, two tiles wider than asked, thresholds the pixels near the tag as the whole image does.
+  const int tile = 4;
+  const int w = static_cast<int>(I.getWidth()), h = static_cast<int>(I.getHeight());
+  auto snapDown = [&](double x, int limit) {
+    if (!std::isfinite(x))
+      return 0;
+    const double v = std::floor(std::max(0., std::min(x, static_cast<double>(limit))) / tile) * tile - 2 * tile;
+    return std::max(0, static_cast<int>(v));
+  };
+  auto snapUp = [&](double x, int limit) {
+    if (!std::isfinite(x))
+      return limit;
+    const double v = std::ceil(std::max(0., std::min(x, static_cast<double>(limit))) / tile) * tile + 2 * tile;
+    return std::min(limit, static_cast<int>(v));
+  };
+  const int left = snapDown(window.getLeft(), w), top = snapDown(window.getTop(), h);
+  const int right = snapUp(window.getRight() + 1., w), bottom = snapUp(window.getBottom() + 1., h);
+  if (right - left >= w && bottom - top >= h) {
+    return detect(I); // the window is the image
+  }
+  if (right - left > 4 * tile && bottom - top > 4 * tile) {
+    m_window.resize(static_cast<unsigned int>(bottom - top), static_cast<unsigned int>(right - left));
+    for (int i = top; i < bottom; ++i) {
+      std::copy(I[i] + left, I[i] + right, m_window[i - top]);
+    }
+    vpCameraParameters cam = m_cam;
+    if (m_cam.get_projModel() == vpCameraParameters::perspectiveProjWithDistortion) {
+      cam.initPersProjWithDistortion(m_cam.get_px(), m_cam.get_py(), m_cam.get_u0() - left, m_cam.get_v0() - top,
+                                     m_cam.get_kud(), m_cam.get_kdu());
+    } else {
+      cam.initPersProjWithoutDistortion(m_cam.get_px(), m_cam.get_py(), m_cam.get_u0() - left, m_cam.get_v0() - top);
+    }
+    m_detector.detect(m_window);
+    collect(vpImagePoint(top, left), cam);
+    bool inside = m_found;
+    const double m = getWindowMargin();
+    for (const vpImagePoint &p : m_polygon) {
+      inside = inside && (left == 0 || p.get_u() >= left + m) && (top == 0 || p.get_v() >= top + m) &&
+               (right == w || p.get_u() <= right - 1 - m) && (bottom == h || p.get_v() <= bottom - 1 - m);
+    }
+    if (inside) {
+      m_usedWindow = true;
+      return true;
+    }
+  }
+  return detect(I);
+}
+
+void vpSSLAprilTagBaseline::collect(const vpImagePoint &offset, const vpCameraParameters &cam)
+{
   m_found = false;
   m_nbOthers = 0;
-  m_detector.detect(I);
+  m_polygon.clear();
   const std::vector<int> ids = m_detector.getTagsId();
   for (size_t i = 0; i < ids.size(); ++i) {
     if (ids[i] != m_id || m_found) {
@@ -36,13 +96,14 @@ bool vpSSLAprilTagBaseline::detect(const vpImage<unsigned char> &I)
       continue;
     }
     m_found = true;
-    std::vector<vpImagePoint> p = m_detector.getPolygon(i);
+    m_polygon = m_detector.getPolygon(i);
     m_centre = vpImagePoint(0., 0.);
-    for (const vpImagePoint &q : p)
+    for (vpImagePoint &q : m_polygon) {
+      q += offset;
       m_centre += q * 0.25;
-    m_detector.getPose(i, m_tagSize, m_cam, m_cMo);
+    }
+    m_detector.getPose(i, m_tagSize, cam, m_cMo);
   }
-  return m_found;
 }
 
 std::vector<vpSSLAprilTagBaseline::BenchmarkResult> vpSSLAprilTagBaseline::runOnVispBenchmark(const std::string &dir,

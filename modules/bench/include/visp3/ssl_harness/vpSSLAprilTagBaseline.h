@@ -13,6 +13,7 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpImagePoint.h>
+#include <visp3/core/vpRect.h>
 #include <visp3/detection/vpDetectorAprilTag.h>
 #include <visp3/ssl_sim/vpSSLAprilTagSheet.h>
 
@@ -53,15 +54,34 @@ public:
   */
   bool detect(const vpImage<unsigned char> &I);
 
+  /*!
+    As detect(I), but reads \e window of \e I first and the whole image only when the window does not give the
+    sheet's tag well inside it: what a tracking user does to save the detector most of the image. The window is
+    widened by two of AprilTag's 4-pixel threshold tiles and its corner snapped onto their grid, so that every
+    pixel near the tag is thresholded as in the whole image; the tag is kept only when its corners lie at least
+    getWindowMargin() pixels inside the window's edges (image edges excepted). The corners, the pose and the
+    tag's id are then those of detect(I) up to float rounding (test/test_vs_apriltag.cpp checks 1e-3 px);
+    getNbOthers() counts the other tags of the window only.
+    \return true when the sheet's tag was found, in the window or in the whole image.
+  */
+  bool detect(const vpImage<unsigned char> &I, const vpRect &window);
+
+  //! Whether the last detect() read the window alone (false: the whole image was read).
+  bool usedWindow() const { return m_usedWindow; }
+  //! Distance (px) the tag's corners must keep from a window edge for the window's reading to be kept.
+  static double getWindowMargin() { return 16.; }
+
   //! Whether the last detect() found the sheet's tag.
   bool found() const { return m_found; }
   //! The tag's pose found by the last detect().
   const vpHomogeneousMatrix &getPose() const { return m_cMo; }
   //! Mean of the four corners as vpDetectorAprilTag::getPolygon() gives them.
   const vpImagePoint &getCentre() const { return m_centre; }
+  //! The sheet's tag corners found by the last detect(), in vpDetectorAprilTag::getPolygon()'s order.
+  const std::vector<vpImagePoint> &getPolygon() const { return m_polygon; }
   //! Tags of other ids seen by the last detect().
   unsigned int getNbOthers() const { return m_nbOthers; }
-  //! The ViSP detector, for its polygons.
+  //! The ViSP detector (its polygons are in the coordinates of the image or window it last read).
   vpDetectorAprilTag &getDetector() { return m_detector; }
 
   /*!
@@ -74,12 +94,19 @@ public:
   static std::vector<BenchmarkResult> runOnVispBenchmark(const std::string &dir, float quadDecimate = 1.f);
 
 private:
+  // Reads the tag among the detections of the last vpDetectorAprilTag::detect() on an image whose pixel (0, 0)
+  // is \e offset of the caller's image.
+  void collect(const vpImagePoint &offset, const vpCameraParameters &cam);
+
   vpDetectorAprilTag m_detector;
   int m_id;
   double m_tagSize;
   vpCameraParameters m_cam;
   bool m_found;
+  bool m_usedWindow = false;
   unsigned int m_nbOthers;
+  std::vector<vpImagePoint> m_polygon;
+  vpImage<unsigned char> m_window;
   vpHomogeneousMatrix m_cMo;
   vpImagePoint m_centre;
 };

@@ -14,6 +14,7 @@
 #include <visp3/core/vpHomogeneousMatrix.h>
 #include <visp3/core/vpImage.h>
 #include <visp3/core/vpPoint.h>
+#include <visp3/core/vpRect.h>
 #include <visp3/core/vpTranslationVector.h>
 #include <visp3/ssl/vpSSLDetector.h>
 #include <visp3/ssl/vpSSLPoseEstimator.h>
@@ -51,7 +52,8 @@ public:
   enum class Method
   {
     Ssl,         ///< vpSSLTracker (detector, single-frame pose, particle filter with odometry) on the ssl3-a3 sheet.
-    AprilTag,    ///< The AprilTag baseline (36h11) on the tag sheet, its corners and pose fed to the same filter.
+    AprilTag,    ///< The AprilTag baseline (36h11) on the tag sheet, its corners and pose fed to the same filter;
+                 ///< read around where the filter last put the tag, the whole image when that does not give it.
     Truth,       ///< Perfect sensor: the ssl3-a3 landmarks projected at the true pose when in view (no image).
     SslRaw,      ///< vpSSLDetector and vpSSLPoseEstimator alone: the best single-frame pose of each image.
     AprilTagRaw, ///< The AprilTag baseline alone: the tag's corners and pose of each image.
@@ -160,6 +162,12 @@ private:
   //! The tutorial-ssl-servo scenario's events at time \e t: the target taken out and put back, moved, swaying.
   void stepEvents(double t);
 
+  /*!
+    The window around the tag where \e fused (the fusion's output of the last image) puts it: its corners' box
+    widened by half its size and 48 px on each side. \return false when \e fused places no tag in the image.
+  */
+  bool tagWindow(const vpSSLServoInput &fused, vpRect &window) const;
+
   Scene m_scene;
   Method m_method;
   vpCameraParameters m_cam;
@@ -174,6 +182,8 @@ private:
   vpSSLTracker m_tracker;
   vpSSLAprilTagBaseline m_tagFinder;
   vpSSLAprilTagFusion m_tagFusion;
+  vpRect m_tagWindow;
+  bool m_hasTagWindow = false;
   vpSSLDetector m_rawDetector;
   vpSSLPoseEstimator m_rawEstimator;
   vpHomogeneousMatrix m_sMo;
