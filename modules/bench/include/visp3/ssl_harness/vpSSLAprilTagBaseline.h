@@ -59,9 +59,10 @@ public:
     sheet's tag well inside it: what a tracking user does to save the detector most of the image. The window is
     widened by two of AprilTag's 4-pixel threshold tiles and its corner snapped onto their grid, so that every
     pixel near the tag is thresholded as in the whole image; the tag is kept only when its corners lie at least
-    getWindowMargin() pixels inside the window's edges (image edges excepted). The corners, the pose and the
-    tag's id are then those of detect(I) up to float rounding (test/test_vs_apriltag.cpp checks 1e-3 px);
-    getNbOthers() counts the other tags of the window only.
+    getWindowMargin() pixels inside the window's edges (image edges excepted). The tag and its id are then those
+    of detect(I), its corners within a fifth of a pixel (AprilTag's quad fit takes near-tied choices that the
+    shifted coordinates' rounding can flip; test/test_vs_apriltag.cpp); getNbOthers() counts the other tags of the
+    window only.
     \return true when the sheet's tag was found, in the window or in the whole image.
   */
   bool detect(const vpImage<unsigned char> &I, const vpRect &window);
