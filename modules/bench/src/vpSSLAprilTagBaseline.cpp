@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <visp3/core/vpException.h>
+#include <visp3/core/vpImageTools.h>
 #include <visp3/core/vpIoTools.h>
 #include <visp3/core/vpPoseVector.h>
 #include <visp3/ssl_harness/vpSSLBenchMath.h>
@@ -57,10 +58,8 @@ bool vpSSLAprilTagBaseline::detect(const vpImage<unsigned char> &I, const vpRect
     return detect(I); // the window is the image
   }
   if (right - left > 4 * tile && bottom - top > 4 * tile) {
-    m_window.resize(static_cast<unsigned int>(bottom - top), static_cast<unsigned int>(right - left));
-    for (int i = top; i < bottom; ++i) {
-      std::copy(I[i] + left, I[i] + right, m_window[i - top]);
-    }
+    vpImageTools::crop(I, top, left, static_cast<unsigned int>(bottom - top), static_cast<unsigned int>(right - left),
+                       m_window);
     vpCameraParameters cam = m_cam;
     if (m_cam.get_projModel() == vpCameraParameters::perspectiveProjWithDistortion) {
       cam.initPersProjWithDistortion(m_cam.get_px(), m_cam.get_py(), m_cam.get_u0() - left, m_cam.get_v0() - top,
