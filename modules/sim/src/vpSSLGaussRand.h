@@ -17,8 +17,12 @@
 #ifndef VP_SSL_GAUSS_RAND_H
 #define VP_SSL_GAUSS_RAND_H
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+
+#include "vpSSLNoiseKernel.h"
 
 //! Gaussian deviates identical to those of vpGaussRand(sigma, mean, seed), with inline draws.
 class vpSSLGaussRand
@@ -37,7 +41,60 @@ public:
   //! The next deviate, sigma * N(0, 1) + mean, as vpGaussRand::operator()().
   double operator()() { return m_sigma * standardDraw() + m_mean; }
 
+  /*!
+    The next \e count deviates, those of \e count calls of operator()() in their order, into \e out; the generator
+    is left where those calls leave it. The polar method's candidate pairs are drawn ahead, the accepted ones kept
+    without a branch on the random outcome, and their logarithms, divisions and square roots done in loops of their
+    own (vpSSLNoiseKernel); the draws past the last pair used are taken back.
+  */
+  void draw(double *out, size_t count)
+  {
+    size_t k = 0;
+    if (count > 0 && m_hasSecond) {
+      m_hasSecond = false;
+      out[k++] = m_sigma * m_second + m_mean;
+    }
+    double v1[kCandidates], v2[kCandidates], rsq[kCandidates], logRsq[kCandidates], fac[kCandidates];
+    uint64_t stateAfter[kCandidates];
+    while (k < count) {
+      const size_t pairs = (count - k + 1) / 2;
+      // A pair is accepted with probability pi / 4: a third more candidates than pairs needed, most often enough.
+      const size_t nc = std::min(kCandidates, pairs + pairs / 3 + 4);
+      size_t na = 0;
+      for (size_t i = 0; i < nc; ++i) {
+        const double a = 2. * uniform() - 1.;
+        const double b = 2. * uniform() - 1.;
+        const double r = a * a + b * b;
+        v1[na] = a;
+        v2[na] = b;
+        rsq[na] = r;
+        stateAfter[na] = m_state;
+        na += r < 1. ? 1 : 0;
+      }
+      const size_t used = std::min(na, pairs);
+      if (used > 0) {
+        m_state = stateAfter[used - 1];
+      }
+      for (size_t i = 0; i < used; ++i) {
+        logRsq[i] = std::log(rsq[i]);
+      }
+      vpSSLNoiseKernel::polarFactors(rsq, logRsq, used, fac);
+      for (size_t i = 0; i < used; ++i) {
+        out[k++] = m_sigma * (v1[i] * fac[i]) + m_mean;
+        if (k < count) {
+          out[k++] = m_sigma * (v2[i] * fac[i]) + m_mean;
+        } else {
+          m_second = v2[i] * fac[i];
+          m_hasSecond = true;
+        }
+      }
+    }
+  }
+
 private:
+  //! Candidate pairs drawn ahead at most, per pass of draw().
+  static constexpr size_t kCandidates = 512;
+
   //! The PCG32 stream vpGaussRand's vpUniRand is seeded on.
   static constexpr uint64_t kStream = 0x123465789ULL;
 

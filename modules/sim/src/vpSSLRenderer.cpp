@@ -15,6 +15,7 @@
 #include <visp3/ssl/vpSSLPattern.h>
 
 #include "vpSSLQuantise.h"
+#include "vpSSLSurfaceKernel.h"
 
 namespace {
 // A ray whose direction has |dz| below this (in normalised units, |d| >= 1) is grazing the plane so
@@ -71,6 +72,10 @@ inline bool maybePositiveQuotient(double num, double den)
 {
   return (num > 0. && den > 0.) || (num < 0. && den < 0.);
 }
+
+// Margin of the open-water test of renderCore() (normalised image units, and surface-normal cosines): some 1e-4 px,
+// and still some 1e10 times the rounding of the quantities it bounds.
+const double kOpenWaterMargin = 1e-6;
 
 // Sub-pixel offset from the pixel centre: the n x n grid that tiles the pixel's unit square.
 inline double subOffset(unsigned int i, unsigned int n)
@@ -493,6 +498,125 @@ double vpSSLRenderer::shade(const Scene &s, const double p[3], const double d[3]
   }
 }
 
+// Which pixels' rays can meet what, from the camera's centre (renderCore()'s rays without distortion): the sheet
+// only if the ray's normalised point (x, y) lies in the sheet's projection, the convex quadrilateral of its corners'
+// projections when all four are in front of the camera (nowhere when all four are behind it); the sheet after a
+// reflection on the water surface only if (x, y) lies in the projection of the sheet's mirror image (the reflected ray
+// is the mirror image of the ray's continuation); the surface only if sn . R (x, y, 1) > 0. Each test is a box or an
+// affine bound, widened by far more than the rounding of the quantities shade() computes, so that a pixel said to miss
+// does miss on every ray.
+struct vpSSLRenderer::OpenWater
+{
+  bool enabled = false;               // the sheet's corners are all in front of the camera, or all behind it
+  std::vector<unsigned char> colOff;  // per column and row: the pixel's rays all miss the sheet's box
+  std::vector<unsigned char> rowOff;  //
+  bool mirror = false;                // the same for the mirror image's corners
+  std::vector<unsigned char> colOffM; // the same for the mirror image's box
+  std::vector<unsigned char> rowOffM; //
+  std::vector<double> colUp, rowUp;   // the largest column and row terms of sn . R (x, y, 1) over the pixel's rays
+  double up = -1.;                    // its constant term (-1 without a surface seen from below)
+  double num = 0.;                    // sd - sn . o, shade()'s numerator of the surface hit for these rays
+};
+
+namespace {
+// Box [xMin, xMax] x [yMin, yMax] of the normalised projections of four points (sheet frame) seen from the camera at
+// o with orientation R (rows: sheet axes), widened by the margin; an empty box when all four are behind the camera
+// (the rays, whose points are all in front of it, meet nothing of their convex hull); false when some are in front
+// and some not (or on the camera's plane).
+bool projectedBox(const double R[3][3], const double o[3], const double P[4][3], double box[4])
+{
+  box[0] = box[2] = std::numeric_limits<double>::infinity();
+  box[1] = box[3] = -box[0];
+  int front = 0, behind = 0;
+  for (int i = 0; i < 4; ++i) {
+    double c[3];
+    for (int k = 0; k < 3; ++k) {
+      c[k] = R[0][k] * (P[i][0] - o[0]) + R[1][k] * (P[i][1] - o[1]) + R[2][k] * (P[i][2] - o[2]);
+    }
+    if (c[2] < -kOpenWaterMargin) {
+      ++behind;
+      continue;
+    }
+    if (!(c[2] > kOpenWaterMargin)) {
+      return false;
+    }
+    ++front;
+    box[0] = std::min(box[0], c[0] / c[2]);
+    box[1] = std::max(box[1], c[0] / c[2]);
+    box[2] = std::min(box[2], c[1] / c[2]);
+    box[3] = std::max(box[3], c[1] / c[2]);
+  }
+  if (behind == 4) {
+    return true;
+  }
+  if (front != 4) {
+    return false;
+  }
+  box[0] -= kOpenWaterMargin;
+  box[1] += kOpenWaterMargin;
+  box[2] -= kOpenWaterMargin;
+  box[3] += kOpenWaterMargin;
+  return true;
+}
+} // namespace
+
+void vpSSLRenderer::openWater(const Scene &s, OpenWater &open) const
+{
+  const unsigned int n = m_supersampling;
+  double P[4][3], box[4];
+  for (int i = 0; i < 4; ++i) {
+    P[i][0] = s.sheetX + (i & 1 ? s.halfW : -s.halfW);
+    P[i][1] = s.sheetY + (i & 2 ? s.halfH : -s.halfH);
+    P[i][2] = 0.;
+  }
+  open.enabled = projectedBox(s.R, s.o, P, box);
+  if (!open.enabled) {
+    return;
+  }
+  // A pixel's rays span its first to its last sub-pixel column and row (m_subX and m_subY increase).
+  auto offMasks = [&](const double bx[4], std::vector<unsigned char> &col, std::vector<unsigned char> &row) {
+    col.resize(m_width);
+    row.resize(m_height);
+    for (unsigned int u = 0; u < m_width; ++u) {
+      col[u] = m_subX[static_cast<size_t>(u) * n + n - 1] < bx[0] || m_subX[static_cast<size_t>(u) * n] > bx[1];
+    }
+    for (unsigned int v = 0; v < m_height; ++v) {
+      row[v] = m_subY[static_cast<size_t>(v) * n + n - 1] < bx[2] || m_subY[static_cast<size_t>(v) * n] > bx[3];
+    }
+  };
+  offMasks(box, open.colOff, open.rowOff);
+  open.num = s.sd - (s.sn[0] * s.o[0] + s.sn[1] * s.o[1] + s.sn[2] * s.o[2]);
+  const bool below = s.surface && open.num > 0.;
+  double a = 0., b = 0.;
+  open.up = -1.;
+  open.mirror = false;
+  if (below) {
+    a = s.sn[0] * s.R[0][0] + s.sn[1] * s.R[1][0] + s.sn[2] * s.R[2][0];
+    b = s.sn[0] * s.R[0][1] + s.sn[1] * s.R[1][1] + s.sn[2] * s.R[2][1];
+    open.up = s.sn[0] * s.R[0][2] + s.sn[1] * s.R[1][2] + s.sn[2] * s.R[2][2];
+    // The sheet's mirror image in the surface sn . X = sd.
+    double M[4][3];
+    for (int i = 0; i < 4; ++i) {
+      const double h = s.sn[0] * P[i][0] + s.sn[1] * P[i][1] + s.sn[2] * P[i][2] - s.sd;
+      for (int k = 0; k < 3; ++k) {
+        M[i][k] = P[i][k] - 2. * h * s.sn[k];
+      }
+    }
+    open.mirror = projectedBox(s.R, s.o, M, box);
+    if (open.mirror) {
+      offMasks(box, open.colOffM, open.rowOffM);
+    }
+  }
+  open.colUp.resize(m_width);
+  open.rowUp.resize(m_height);
+  for (unsigned int u = 0; u < m_width; ++u) {
+    open.colUp[u] = std::max(a * m_subX[static_cast<size_t>(u) * n], a * m_subX[static_cast<size_t>(u) * n + n - 1]);
+  }
+  for (unsigned int v = 0; v < m_height; ++v) {
+    open.rowUp[v] = std::max(b * m_subY[static_cast<size_t>(v) * n], b * m_subY[static_cast<size_t>(v) * n + n - 1]);
+  }
+}
+
 void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectance, float *range,
                                unsigned char *grey) const
 {
@@ -521,56 +645,194 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
       }
     }
   }
-#pragma omp parallel for schedule(dynamic, 4)
-  for (int v = 0; v < height; ++v) {
+  // Open water: the pixels whose rays can meet neither the sheet nor its mirror image in the surface (without a
+  // backdrop) are the background, or the surface reflecting it, on every ray; their shading leaves out the tests that
+  // cannot pass, and sums as the rays' loop below sums.
+  OpenWater open;
+  if (separable && !scene.backdrop) {
+    openWater(scene, open);
+  }
+  // Without distortion a pixel's central normalised point (centralRay()) is (x of its column, y of its row).
+  std::vector<double> centralX, centralY;
+  if (open.enabled) {
+    centralX.resize(m_width);
+    centralY.resize(m_height);
+    double unused = 0.;
     for (unsigned int u = 0; u < m_width; ++u) {
-      const double background = hasBackgroundImage ? m_backgroundImage[v][u] / 255. : m_background;
-      double sum = 0.;
-      for (unsigned int j = 0; j < n; ++j) {
-        for (unsigned int i = 0; i < n; ++i) {
-          double t = 0.;
-          if (separable) {
-            const double *cp = &colProducts[3 * (static_cast<size_t>(u) * n + i)];
+      vpPixelMeterConversion::convertPoint(m_cam, u, 0, centralX[u], unused);
+    }
+    for (unsigned int v = 0; v < m_height; ++v) {
+      vpPixelMeterConversion::convertPoint(m_cam, 0, v, unused, centralY[v]);
+    }
+  }
+  vpSSLSurfaceKernel::Surface surface;
+  for (int k = 0; k < 3; ++k) {
+    surface.sn[k] = scene.sn[k];
+  }
+  surface.num = open.num;
+  surface.maxRange2 = m_maxRange * m_maxRange;
+  surface.waterIndex = kWaterIndex;
+  surface.parallelEps = kParallelEps;
+  enum Kind : unsigned char
+  {
+    FULL,       // shade() on every ray
+    BACKGROUND, // every ray misses everything
+    SURFACE     // every ray meets at most the surface, and nothing after it
+  };
+#pragma omp parallel
+  {
+    // A row's surface rays, shaded together (vpSSLSurfaceKernel): first the pixels' n x n rays, then their central
+    // rays for the range.
+    std::vector<unsigned char> kind(m_width);
+    std::vector<double> dx, dy, dz, fresnel, tw;
+#pragma omp for schedule(dynamic, 4)
+    for (int v = 0; v < height; ++v) {
+      // Room for every ray of the row and the central ones: written by index, the vectors' sizes set once.
+      const size_t room = static_cast<size_t>(m_width) * (n * n + 1);
+      if (dx.size() < room) {
+        dx.resize(room);
+        dy.resize(room);
+        dz.resize(room);
+        fresnel.resize(room);
+        tw.resize(room);
+      }
+      size_t nb = 0;
+      for (unsigned int u = 0; u < m_width; ++u) {
+        kind[u] = FULL;
+        if (!open.enabled || !(open.colOff[u] || open.rowOff[v])) {
+          continue;
+        }
+        if (open.colUp[u] + open.rowUp[v] + open.up < -kOpenWaterMargin) {
+          kind[u] = BACKGROUND;
+        } else if (open.mirror && (open.colOffM[u] || open.rowOffM[v])) {
+          kind[u] = SURFACE;
+          for (unsigned int j = 0; j < n; ++j) {
             const double *rp = &rowProducts[3 * (static_cast<size_t>(v) * n + j)];
-            const double d[3] = {cp[0] + rp[0] + scene.R[0][2], cp[1] + rp[1] + scene.R[1][2],
-                                 cp[2] + rp[2] + scene.R[2][2]};
-            sum += shade(scene, scene.o, d, background, true, 0., t);
-            continue;
+            for (unsigned int i = 0; i < n; ++i) {
+              const double *cp = &colProducts[3 * (static_cast<size_t>(u) * n + i)];
+              dx[nb] = cp[0] + rp[0] + scene.R[0][2];
+              dy[nb] = cp[1] + rp[1] + scene.R[1][2];
+              dz[nb] = cp[2] + rp[2] + scene.R[2][2];
+              ++nb;
+            }
           }
-          double x = 0., y = 0.;
-          normalisedRay(u, static_cast<unsigned int>(v), i, j, x, y);
-          const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
-                               scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
-                               scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
-          sum += shade(scene, scene.o, d, background, true, 0., t);
         }
       }
-      const double mean = sum * invSamples;
-      const size_t idx = static_cast<size_t>(v) * m_width + u;
-      if (reflectance) {
-        reflectance[idx] = static_cast<float>(mean);
-      }
-      if (grey) {
-        grey[idx] = vpSSLQuantise::quantise(255. * mean);
-      }
+      const size_t nbRays = nb;
       if (range) {
-        double x = 0., y = 0., t = 0.;
-        if (!m_centralRayCache.empty()) {
-          x = m_centralRayCache[2 * idx];
-          y = m_centralRayCache[2 * idx + 1];
-        } else {
-          vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
+        for (unsigned int u = 0; u < m_width; ++u) {
+          if (kind[u] == SURFACE) {
+            const double x = centralX[u], y = centralY[v];
+            dx[nb] = scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2];
+            dy[nb] = scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2];
+            dz[nb] = scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2];
+            ++nb;
+          }
         }
-        const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
-                             scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
-                             scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
-        shade(scene, scene.o, d, background, true, 0., t);
-        // |R (x, y, 1)| = sqrt(x^2 + y^2 + 1): t scaled to metres along the ray.
-        range[idx] = std::isfinite(t) ? static_cast<float>(t * std::sqrt(x * x + y * y + 1.))
-                                      : std::numeric_limits<float>::infinity();
+      }
+      if (nb > 0) {
+        vpSSLSurfaceKernel::surfaceRays(surface, dx.data(), dy.data(), dz.data(), nb, fresnel.data(), tw.data());
+      }
+      size_t ray = 0, central = nbRays;
+      for (unsigned int u = 0; u < m_width; ++u) {
+        const double background = hasBackgroundImage ? m_backgroundImage[v][u] / 255. : m_background;
+        const size_t idx = static_cast<size_t>(v) * m_width + u;
+        double sum = 0.;
+        if (kind[u] == FULL) {
+          sum = shadePixel(scene, u, static_cast<unsigned int>(v), background, separable, colProducts, rowProducts);
+        } else if (kind[u] == BACKGROUND) {
+          for (unsigned int k = 0; k < n * n; ++k) {
+            sum += background;
+          }
+        } else {
+          // shade()'s mix for a ray that meets the surface and nothing after it, or the background.
+          for (unsigned int k = 0; k < n * n; ++k, ++ray) {
+            const double r = fresnel[ray];
+            sum += r < 0. ? background : r * background + (1. - r) * kSkyRadiance;
+          }
+        }
+        const double mean = sum * invSamples;
+        if (reflectance) {
+          reflectance[idx] = static_cast<float>(mean);
+        }
+        if (grey) {
+          grey[idx] = vpSSLQuantise::quantise(255. * mean);
+        }
+        if (!range) {
+          continue;
+        }
+        if (kind[u] == FULL) {
+          range[idx] = centralRange(scene, u, static_cast<unsigned int>(v), background);
+        } else if (kind[u] == BACKGROUND) {
+          range[idx] = std::numeric_limits<float>::infinity();
+        } else {
+          // shade()'s path length: to the surface, plus the reflected ray's (infinite: it meets nothing) where the
+          // reflection dominates.
+          const double r = fresnel[central];
+          const double t = r < 0. || r >= 0.5 ? std::numeric_limits<double>::infinity() : tw[central];
+          range[idx] = rangeOf(centralX[u], centralY[v], t);
+          ++central;
+        }
       }
     }
   }
+}
+
+double vpSSLRenderer::shadePixel(const Scene &scene, unsigned int u, unsigned int v, double background, bool separable,
+                                 const std::vector<double> &colProducts, const std::vector<double> &rowProducts) const
+{
+  const unsigned int n = m_supersampling;
+  double sum = 0.;
+  for (unsigned int j = 0; j < n; ++j) {
+    for (unsigned int i = 0; i < n; ++i) {
+      double t = 0.;
+      if (separable) {
+        const double *cp = &colProducts[3 * (static_cast<size_t>(u) * n + i)];
+        const double *rp = &rowProducts[3 * (static_cast<size_t>(v) * n + j)];
+        const double d[3] = {cp[0] + rp[0] + scene.R[0][2], cp[1] + rp[1] + scene.R[1][2],
+                             cp[2] + rp[2] + scene.R[2][2]};
+        sum += shade(scene, scene.o, d, background, true, 0., t);
+        continue;
+      }
+      double x = 0., y = 0.;
+      normalisedRay(u, static_cast<unsigned int>(v), i, j, x, y);
+      const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
+                           scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
+                           scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
+      sum += shade(scene, scene.o, d, background, true, 0., t);
+    }
+  }
+  return sum;
+}
+
+void vpSSLRenderer::centralRay(const Scene &scene, unsigned int u, unsigned int v, double &x, double &y,
+                               double d[3]) const
+{
+  if (!m_centralRayCache.empty()) {
+    const size_t idx = static_cast<size_t>(v) * m_width + u;
+    x = m_centralRayCache[2 * idx];
+    y = m_centralRayCache[2 * idx + 1];
+  } else {
+    vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
+  }
+  for (int k = 0; k < 3; ++k) {
+    d[k] = scene.R[k][0] * x + scene.R[k][1] * y + scene.R[k][2];
+  }
+}
+
+float vpSSLRenderer::rangeOf(double x, double y, double t)
+{
+  // |R (x, y, 1)| = sqrt(x^2 + y^2 + 1): t scaled to metres along the ray.
+  return std::isfinite(t) ? static_cast<float>(t * std::sqrt(x * x + y * y + 1.))
+                          : std::numeric_limits<float>::infinity();
+}
+
+float vpSSLRenderer::centralRange(const Scene &scene, unsigned int u, unsigned int v, double background) const
+{
+  double x = 0., y = 0., t = 0., d[3];
+  centralRay(scene, u, v, x, y, d);
+  shade(scene, scene.o, d, background, true, 0., t);
+  return rangeOf(x, y, t);
 }
 
 void vpSSLRenderer::render(const vpHomogeneousMatrix &cMo, vpImage<unsigned char> &I) const

@@ -14,8 +14,9 @@
 #include <visp3/core/vpException.h>
 #include <visp3/core/vpImageConvert.h>
 
+#include "vpSSLBlur.h"
 #include "vpSSLGaussRand.h"
-#include "vpSSLQuantise.h"
+#include "vpSSLNoiseKernel.h"
 
 namespace {
 // ln(1 / 0.02): the 2 % contrast threshold of the human (and Secchi-disc) visibility definition.
@@ -53,65 +54,6 @@ void checkNonNegative(double x, const char *what)
     std::ostringstream os;
     os << "vpSSLWaterModel: " << what << " must be finite and >= 0, got " << x;
     throw vpException(vpException::badValue, os.str());
-  }
-}
-
-// Separable Gaussian blur of one w x h float plane, borders replicated; tmp is the caller's scratch plane (w x h),
-// reused from one call to the next.
-void gaussianBlur(std::vector<float> &plane, std::vector<float> &tmp, unsigned int w, unsigned int h, double sigma)
-{
-  if (sigma <= 0.) {
-    return;
-  }
-  const int r = static_cast<int>(std::ceil(3. * sigma));
-  std::vector<float> k(2 * r + 1);
-  double sum = 0.;
-  for (int i = -r; i <= r; ++i) {
-    k[i + r] = static_cast<float>(std::exp(-0.5 * i * i / (sigma * sigma)));
-    sum += k[i + r];
-  }
-  for (float &x : k) {
-    x = static_cast<float>(x / sum);
-  }
-  tmp.resize(plane.size());
-  const int W = static_cast<int>(w), H = static_cast<int>(h);
-  // Each output sums its taps in the same order (i ascending from 0) as a plain loop over the taps would; the taps
-  // are the outer loop and the pixels the inner one, so that the pixels vectorise, and the border clamp is left to
-  // the pixels within r of the ends.
-  const int x0 = std::min(r, W), x1 = std::max(x0, W - r);
-#pragma omp parallel for schedule(static)
-  for (int y = 0; y < H; ++y) {
-    const float *row = &plane[static_cast<size_t>(y) * w];
-    float *out = &tmp[static_cast<size_t>(y) * w];
-    for (int x = 0; x < W; ++x) {
-      if (x >= x0 && x < x1) {
-        continue;
-      }
-      float acc = 0.f;
-      for (int i = -r; i <= r; ++i) {
-        acc += k[i + r] * row[std::min(std::max(x + i, 0), W - 1)];
-      }
-      out[x] = acc;
-    }
-    std::fill(out + x0, out + x1, 0.f);
-    for (int i = -r; i <= r; ++i) {
-      const float ki = k[i + r];
-      for (int x = x0; x < x1; ++x) {
-        out[x] += ki * row[x + i];
-      }
-    }
-  }
-#pragma omp parallel for schedule(static)
-  for (int y = 0; y < H; ++y) {
-    float *out = &plane[static_cast<size_t>(y) * w];
-    std::fill(out, out + W, 0.f);
-    for (int i = -r; i <= r; ++i) {
-      const float ki = k[i + r];
-      const float *src = &tmp[static_cast<size_t>(std::min(std::max(y + i, 0), H - 1)) * w];
-      for (int x = 0; x < W; ++x) {
-        out[x] += ki * src[x];
-      }
-    }
   }
 }
 
@@ -392,10 +334,7 @@ void vpSSLWaterModel::radiance(const vpImage<float> &reflectance, const vpImage<
       for (size_t p = 0; p < n; ++p) {
         plane[p] = weight[p] * dc[p];
       }
-      gaussianBlur(plane, scratch, w, h, kBlurLevels[l]);
-      for (size_t p = 0; p < n; ++p) {
-        rgb[c * n + p] += plane[p];
-      }
+      vpSSLBlur::addBlurred(plane, w, h, kBlurLevels[l], scratch, &rgb[c * n]);
     }
   }
 }
@@ -427,30 +366,15 @@ void vpSSLWaterModel::apply(const vpImage<float> &reflectance, const vpImage<flo
   // vpGaussRand(1, 0, seed)'s draws, inline (vpSSLGaussRand.h).
   vpSSLGaussRand noise(1., 0., seed);
   // A block's deviates are drawn first (pixel after pixel, R, G, B: the order of the draws is the image's), then
-  // used: the draws, with their libm calls and data-dependent rejections, and the pixels' arithmetic each run in a
-  // loop of their own, without the other's register spills.
-  const size_t kBlock = 256;
+  // used by the vectorised pixel arithmetic (vpSSLNoiseKernel), which writes vpRGBa's R, G, B, A bytes.
+  const size_t kBlock = 1024;
   double deviates[3 * kBlock];
+  unsigned char *rgba = reinterpret_cast<unsigned char *>(I.bitmap);
   for (size_t p0 = 0; p0 < n; p0 += kBlock) {
     const size_t nb = std::min(kBlock, n - p0);
-    for (size_t k = 0; k < 3 * nb; ++k) {
-      deviates[k] = noise();
-    }
-    for (size_t k = 0; k < nb; ++k) {
-      const size_t p = p0 + k;
-      unsigned char out[3];
-      for (int c = 0; c < 3; ++c) {
-        const double y = gain * rgb[c * n + p];
-        const double sd = std::sqrt(std::max(0., m_noiseA * y + m_noiseB));
-        out[c] = vpSSLQuantise::quantise(255. * (y + sd * deviates[3 * k + c]));
-      }
-      // The channels written one by one: vpRGBa's assignment is an out-of-line library call.
-      vpRGBa &pixel = I.bitmap[p];
-      pixel.R = out[0];
-      pixel.G = out[1];
-      pixel.B = out[2];
-      pixel.A = 255;
-    }
+    noise.draw(deviates, 3 * nb);
+    vpSSLNoiseKernel::exposeQuantise(&rgb[p0], &rgb[n + p0], &rgb[2 * n + p0], deviates, nb, gain, m_noiseA, m_noiseB,
+                                     rgba + 4 * p0);
   }
 }
 

@@ -157,6 +157,13 @@ private:
   };
   struct Scene;
   void renderCore(const vpHomogeneousMatrix &cMo, float *reflectance, float *range, unsigned char *grey) const;
+  struct OpenWater;
+  void openWater(const Scene &scene, OpenWater &open) const;
+  double shadePixel(const Scene &scene, unsigned int u, unsigned int v, double background, bool separable,
+                    const std::vector<double> &colProducts, const std::vector<double> &rowProducts) const;
+  void centralRay(const Scene &scene, unsigned int u, unsigned int v, double &x, double &y, double d[3]) const;
+  static float rangeOf(double x, double y, double t);
+  float centralRange(const Scene &scene, unsigned int u, unsigned int v, double background) const;
   Scene makeScene(const vpHomogeneousMatrix &cMo) const;
   double shade(const Scene &scene, const double p[3], const double d[3], double background, bool surface, double path0,
                double &t) const;
