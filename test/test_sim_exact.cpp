@@ -307,13 +307,7 @@ TEST(SimExact, OpenWaterShortcutIsTheFullShading)
           for (double roll : {0., 0.2}) {
             // The world is North-East-Down with the surface at z = 0 (vpSSLScenario). The sheet faces south: its
             // axes, as a level camera's looking north, are x east, y down, z north.
-            vpRotationMatrix north;
-            north[0][0] = 0.;
-            north[0][2] = 1.;
-            north[1][0] = 1.;
-            north[1][1] = 0.;
-            north[2][1] = 1.;
-            north[2][2] = 0.;
+            const vpRotationMatrix north({0., 0., 1., 1., 0., 0., 0., 1., 0.});
             const vpHomogeneousMatrix wMo(vpTranslationVector(0., 0., depthAbove), north);
             // The camera south of it, turned by yaw about the vertical and rolled about its optical axis.
             const vpHomogeneousMatrix wMc(
