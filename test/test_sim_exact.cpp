@@ -78,8 +78,10 @@ TEST(SimExact, QuantiseIsClampOfRoundEverywhere)
                    -2147483649.}) {
     EXPECT_EQ(vpSSLQuantise::quantise(v), reference(v)) << v;
   }
-  // Uniform values over the pixel range and beyond, and random bit patterns (every magnitude); NaN excluded, where
-  // both take the same std::round expression.
+  // NaN, for which the reference's cast is undefined, is black.
+  EXPECT_EQ(vpSSLQuantise::quantise(std::numeric_limits<double>::quiet_NaN()), 0);
+  EXPECT_EQ(vpSSLQuantise::quantise(-std::numeric_limits<double>::quiet_NaN()), 0);
+  // Uniform values over the pixel range and beyond, and random bit patterns (every magnitude); NaN excluded (above).
   std::mt19937_64 gen(7);
   std::uniform_real_distribution<double> pixel(-20., 280.);
   for (int i = 0; i < 4000000; ++i) {

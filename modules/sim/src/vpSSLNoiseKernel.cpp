@@ -41,8 +41,8 @@ void ExposeQuantiseImpl(const float *red, const float *green, const float *blue,
                         double gain, double a, double b, unsigned char *rgba)
 {
   const float *planes[3] = {red, green, blue};
-  // One pixel as the scalar expressions give it: the tail, and vectors holding a NaN (which the quantisation
-  // leaves to std::round).
+  // One pixel as the scalar expressions give it: the tail, and vectors holding a NaN (which the quantisation maps
+  // to 0).
   auto scalarPixel = [&](size_t k) {
     for (int c = 0; c < 3; ++c) {
       const double y = gain * planes[c][k];

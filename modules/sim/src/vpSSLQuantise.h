@@ -6,15 +6,14 @@
   truncation instead: for 0 <= v < 255, i = (int)v is floor(v), v - i is exact (i and v are within the same or a
   smaller binade) and rounding half away from zero is i + 1 exactly when v - i >= 0.5. Outside that range the clamp
   decides alone: v >= 255 rounds to 255 or more, v < 0 to 0 or less (-0 included), both of which the clamp maps to the
-  same byte. NaN keeps the std::round expression.
+  same byte. NaN, for which the cast of std::round's result is undefined, is 0 (black, the byte x86-64's conversion
+  gave).
 */
 #ifndef VP_SSL_QUANTISE_H
 #define VP_SSL_QUANTISE_H
 
-#include <cmath>
-
 namespace vpSSLQuantise {
-//! static_cast<unsigned char>(clamp(std::round(v), 0, 255)), without the libm call for finite v.
+//! static_cast<unsigned char>(clamp(std::round(v), 0, 255)), without the libm call; 0 for NaN.
 inline unsigned char quantise(double v)
 {
   if (v >= 0.) {
@@ -24,11 +23,8 @@ inline unsigned char quantise(double v)
     }
     return 255;
   }
-  if (v < 0.) {
-    return 0;
-  }
-  const double g = std::round(v);
-  return static_cast<unsigned char>(g < 0. ? 0. : (g > 255. ? 255. : g));
+  // v < 0, and NaN.
+  return 0;
 }
 } // namespace vpSSLQuantise
 
