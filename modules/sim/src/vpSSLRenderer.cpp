@@ -652,7 +652,7 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
   if (separable && !scene.backdrop) {
     openWater(scene, open);
   }
-  // Without distortion a pixel's central normalised point (centralRay()) is (x of its column, y of its row).
+  // Without distortion a pixel's central normalised point (centralRange()) is (x of its column, y of its row).
   std::vector<double> centralX, centralY;
   if (open.enabled) {
     centralX.resize(m_width);
@@ -684,18 +684,11 @@ void vpSSLRenderer::renderCore(const vpHomogeneousMatrix &cMo, float *reflectanc
     // A row's surface rays, shaded together (vpSSLSurfaceKernel): first the pixels' n x n rays, then their central
     // rays for the range.
     std::vector<unsigned char> kind(m_width);
-    std::vector<double> dx, dy, dz, fresnel, tw;
+    // Room for every ray of a row and its central ones, written by index.
+    const size_t room = open.enabled ? static_cast<size_t>(m_width) * (n * n + 1) : 0;
+    std::vector<double> dx(room), dy(room), dz(room), fresnel(room), tw(room);
 #pragma omp for schedule(dynamic, 4)
     for (int v = 0; v < height; ++v) {
-      // Room for every ray of the row and the central ones: written by index, the vectors' sizes set once.
-      const size_t room = static_cast<size_t>(m_width) * (n * n + 1);
-      if (dx.size() < room) {
-        dx.resize(room);
-        dy.resize(room);
-        dz.resize(room);
-        fresnel.resize(room);
-        tw.resize(room);
-      }
       size_t nb = 0;
       for (unsigned int u = 0; u < m_width; ++u) {
         kind[u] = FULL;
@@ -805,21 +798,6 @@ double vpSSLRenderer::shadePixel(const Scene &scene, unsigned int u, unsigned in
   return sum;
 }
 
-void vpSSLRenderer::centralRay(const Scene &scene, unsigned int u, unsigned int v, double &x, double &y,
-                               double d[3]) const
-{
-  if (!m_centralRayCache.empty()) {
-    const size_t idx = static_cast<size_t>(v) * m_width + u;
-    x = m_centralRayCache[2 * idx];
-    y = m_centralRayCache[2 * idx + 1];
-  } else {
-    vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
-  }
-  for (int k = 0; k < 3; ++k) {
-    d[k] = scene.R[k][0] * x + scene.R[k][1] * y + scene.R[k][2];
-  }
-}
-
 float vpSSLRenderer::rangeOf(double x, double y, double t)
 {
   // |R (x, y, 1)| = sqrt(x^2 + y^2 + 1): t scaled to metres along the ray.
@@ -829,8 +807,17 @@ float vpSSLRenderer::rangeOf(double x, double y, double t)
 
 float vpSSLRenderer::centralRange(const Scene &scene, unsigned int u, unsigned int v, double background) const
 {
-  double x = 0., y = 0., t = 0., d[3];
-  centralRay(scene, u, v, x, y, d);
+  double x = 0., y = 0., t = 0.;
+  if (!m_centralRayCache.empty()) {
+    const size_t idx = static_cast<size_t>(v) * m_width + u;
+    x = m_centralRayCache[2 * idx];
+    y = m_centralRayCache[2 * idx + 1];
+  } else {
+    vpPixelMeterConversion::convertPoint(m_cam, u, v, x, y);
+  }
+  const double d[3] = {scene.R[0][0] * x + scene.R[0][1] * y + scene.R[0][2],
+                       scene.R[1][0] * x + scene.R[1][1] * y + scene.R[1][2],
+                       scene.R[2][0] * x + scene.R[2][1] * y + scene.R[2][2]};
   shade(scene, scene.o, d, background, true, 0., t);
   return rangeOf(x, y, t);
 }

@@ -161,7 +161,6 @@ private:
   void openWater(const Scene &scene, OpenWater &open) const;
   double shadePixel(const Scene &scene, unsigned int u, unsigned int v, double background, bool separable,
                     const std::vector<double> &colProducts, const std::vector<double> &rowProducts) const;
-  void centralRay(const Scene &scene, unsigned int u, unsigned int v, double &x, double &y, double d[3]) const;
   static float rangeOf(double x, double y, double t);
   float centralRange(const Scene &scene, unsigned int u, unsigned int v, double background) const;
   Scene makeScene(const vpHomogeneousMatrix &cMo) const;
