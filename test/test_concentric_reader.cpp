@@ -95,6 +95,50 @@ vpSSLConcentricReader reader()
   r.setRadiusRange(4., 300.);
   return r;
 }
+
+// The shapes of ReadsNothingOnDiscsBullseyesAndChessboards, centred on (100, 100) in 201 x 201 px: kind 0 a dark disc
+// of radius size, 1 a light disc on a dark ground, 2 rings of equal width size / 2, the outer one dark, 3 a chessboard
+// of squares of side size with a corner at the centre; dark grey level dark on 220, blurred by sigma (px), plus
+// uniform noise of +-2 grey levels from the linear congruential generator's state.
+vpImage<unsigned char> noisyShape(int kind, double size, double sigma, double dark, unsigned int &state)
+{
+  const int N = 201, c = 100;
+  auto noise = [&]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / (1u << 24) - 0.5; // uniform in [-0.5, 0.5)
+  };
+  vpImage<double> D(N, N);
+  for (int v = 0; v < N; ++v) {
+    for (int u = 0; u < N; ++u) {
+      const double rho = std::hypot(u - c, v - c);
+      bool isDark = false;
+      switch (kind) {
+      case 0:
+        isDark = rho < size;
+        break;
+      case 1:
+        isDark = rho >= size;
+        break;
+      case 2:
+        isDark = rho < 5 * size / 2. && static_cast<int>(rho / (size / 2.)) % 2 == 0;
+        break;
+      default:
+        isDark =
+            ((static_cast<int>(std::floor((u - c) / size)) + static_cast<int>(std::floor((v - c) / size))) & 1) != 0;
+      }
+      D[v][u] = isDark ? dark : 220.;
+    }
+  }
+  vpImage<double> B = D;
+  if (sigma > 0.) {
+    vpImageFilter::gaussianBlur(D, B, 2 * static_cast<unsigned int>(std::ceil(3. * sigma)) + 1, sigma);
+  }
+  vpImage<unsigned char> I(N, N);
+  for (unsigned int i = 0; i < I.getSize(); ++i) {
+    I.bitmap[i] = static_cast<unsigned char>(std::min(255., std::max(0., B.bitmap[i] + 4. * noise() + 0.5)));
+  }
+  return I;
+}
 } // namespace
 
 TEST(ConcentricReader, ReadsObliqueAndBlurredLandmarks)
@@ -318,53 +362,83 @@ TEST(ConcentricReader, BlurredRingModelAddsNoReadingOnDiscsBullseyesAndChessboar
   // follow s_p, doc/detector.md).
   vpSSLConcentricReader r = reader(), off = reader();
   r.setBlurredRingModel(true);
-  const int N = 201, c = 100;
+  const int c = 100;
   unsigned int state = 12345u;
-  auto noise = [&]() {
-    state = state * 1664525u + 1013904223u;
-    return static_cast<double>(state >> 8) / (1u << 24) - 0.5; // uniform in [-0.5, 0.5)
-  };
   for (int kind = 0; kind < 4; ++kind) {
     for (double size : {6., 9., 14., 22., 35.}) {
       for (double sigma : {0., 1.5, 2.5}) {
         for (double dark : {30., 200.}) {
-          vpImage<double> D(N, N);
-          for (int v = 0; v < N; ++v) {
-            for (int u = 0; u < N; ++u) {
-              const double rho = std::hypot(u - c, v - c);
-              bool isDark = false;
-              switch (kind) {
-              case 0:
-                isDark = rho < size;
-                break;
-              case 1:
-                isDark = rho >= size;
-                break;
-              case 2:
-                isDark = rho < 5 * size / 2. && static_cast<int>(rho / (size / 2.)) % 2 == 0;
-                break;
-              default:
-                isDark =
-                    ((static_cast<int>(std::floor((u - c) / size)) + static_cast<int>(std::floor((v - c) / size))) &
-                     1) != 0;
-              }
-              D[v][u] = isDark ? dark : 220.;
-            }
-          }
-          vpImage<double> B = D;
-          if (sigma > 0.) {
-            vpImageFilter::gaussianBlur(D, B, 2 * static_cast<unsigned int>(std::ceil(3. * sigma)) + 1, sigma);
-          }
-          vpImage<unsigned char> I(N, N);
-          for (unsigned int i = 0; i < I.getSize(); ++i) {
-            I.bitmap[i] = static_cast<unsigned char>(std::min(255., std::max(0., B.bitmap[i] + 4. * noise() + 0.5)));
-          }
+          const vpImage<unsigned char> I = noisyShape(kind, size, sigma, dark, state);
           vpSSLLandmark l, k;
           l.u = k.u = c + 0.7;
           l.v = k.v = c - 0.4;
           const bool read = r.read(I, l), readOff = off.read(I, k);
           EXPECT_TRUE(!read || readOff) << "kind " << kind << " size " << size << " sigma " << sigma << " dark " << dark
                                         << ": read R " << l.radius;
+        }
+      }
+    }
+  }
+}
+
+TEST(ConcentricReader, ReadAtReadsBlurredLandmarksOfAKnownShape)
+{
+  // B of 15 px on sand, ink of albedo 0.8 on paper of 0.85, blurred by 2.5 px, face-on and 40 degrees off its
+  // normal: read() finds no ring (the fit does not lock, or no copy passes), readAt() about an ellipse 10 % too large,
+  // from 1 px off the centre, reads each within 10 % of its radius, its centre within 0.15 of it.
+  vpSSLConcentricReader r = reader();
+  r.setBlurredRingModel(true);
+  for (double tilt : {0., 40.}) {
+    vpSSLCorpusViewParams p = view(vpMath::rad(tilt), 5.3, 2.5);
+    p.background = vpSSLCorpusViewParams::SAND;
+    p.ink = 0.8;
+    p.readNoise = 0.004;
+    vpSSLCorpusView v(vpSSLTarget::ssl3a3());
+    vpSSLCorpusPhotos none;
+    v.render(p, &sheet(), none);
+    const vpSSLCorpusLandmarkTruth &B = v.getTruth()[0];
+    const std::string what = "tilt " + std::to_string(tilt) + " B " + std::to_string(B.a) + " px";
+    vpSSLLandmark a, b = trueEllipse(B);
+    a.u = b.u = B.u + 0.8;
+    a.v = b.v = B.v - 0.6;
+    b.radius *= 1.1;
+    b.minorRadius *= 1.1;
+    EXPECT_FALSE(r.read(v.getImage(), a)) << what << ": read R " << a.radius;
+    ASSERT_TRUE(r.readAt(v.getImage(), b)) << what << ", stage " << r.getStage();
+    EXPECT_NEAR(b.radius / B.a, 1., 0.1) << what;
+    EXPECT_LT(std::hypot(b.u - B.u, b.v - B.v), 0.15 * B.a) << what;
+  }
+}
+
+TEST(ConcentricReader, ReadAtReadsNothingOnDiscsOrChessboards)
+{
+  // The shapes of ReadsNothingOnDiscsBullseyesAndChessboards, sharp and blurred by 1.5 and 2.5 px, at full and at a
+  // tenth of the contrast, with noise, read about the circle of their outer edge (the chessboard's square) and one
+  // 20 % larger: readAt() reads no disc and no chessboard, and no bull's-eye that read() does not.
+  vpSSLConcentricReader r = reader();
+  r.setBlurredRingModel(true);
+  const int c = 100;
+  unsigned int state = 54321u;
+  for (int kind = 0; kind < 4; ++kind) {
+    for (double size : {6., 9., 14., 22., 35.}) {
+      for (double sigma : {0., 1.5, 2.5}) {
+        for (double dark : {30., 200.}) {
+          const vpImage<unsigned char> I = noisyShape(kind, size, sigma, dark, state);
+          const double outer = kind == 2 ? 2.5 * size : size;
+          for (double scale : {1., 1.2}) {
+            vpSSLLandmark l, k;
+            l.u = k.u = c + 0.7;
+            l.v = k.v = c - 0.4;
+            l.radius = l.minorRadius = scale * outer;
+            bool read = r.readAt(I, l);
+            if (read) {
+              r.similarity(I, l);
+              read = !r.isEqualRings();
+            }
+            const bool readFree = kind == 2 && r.read(I, k);
+            EXPECT_TRUE(!read || readFree) << "kind " << kind << " size " << size << " sigma " << sigma << " dark "
+                                           << dark << " scale " << scale << ": read R " << l.radius;
+          }
         }
       }
     }

@@ -63,6 +63,8 @@ Options:
   --small-landmarks  vpSSLDetector::setSmallLandmarkMode(true).
   --no-equal-rings   vpSSLDetector::setEqualRingCheck(false) (on by default).
   --no-blur-model    vpSSLDetector::setBlurredRingModel(false) (on by default).
+  --no-target-completion
+                     vpSSLDetector::setTargetCompletion(false) (on by default).
   --apriltag         Also render every view with an AprilTag 36h11 (id 0, 0.2376 m side,
                      centred where the SSL sheet is) instead of the SSL sheet, and run
                      vpDetectorAprilTag (36h11, quad decimate 2, one thread) on it: the tables
@@ -77,7 +79,7 @@ struct Options
   unsigned int views = 200, negatives = 50, threads = 1, saveImages = 0, saveMisses = 0, decimation = 1;
   unsigned long long seed = 1;
   std::string outputDir = "corpus-out";
-  bool small = false, equalRings = true, blurModel = true, apriltag = false, explainMisses = false;
+  bool small = false, equalRings = true, blurModel = true, completion = true, apriltag = false, explainMisses = false;
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -122,6 +124,8 @@ bool parse(int argc, char **argv, Options &o)
       o.equalRings = false;
     } else if (a == "--no-blur-model") {
       o.blurModel = false;
+    } else if (a == "--no-target-completion") {
+      o.completion = false;
     } else if (a == "--explain-misses") {
       o.explainMisses = true;
     } else if (a == "--apriltag") {
@@ -251,6 +255,7 @@ void configure(vpSSLDetector &d, const Options &o)
   d.setSmallLandmarkMode(o.small);
   d.setEqualRingCheck(o.equalRings);
   d.setBlurredRingModel(o.blurModel);
+  d.setTargetCompletion(o.completion);
 }
 } // namespace
 
@@ -336,8 +341,8 @@ int main(int argc, char **argv)
   std::cout << "## Detector recall on the independent corpus\n\n"
             << "Views " << o.views << ", negatives " << o.negatives << ", seed " << o.seed << ", detector: decimation "
             << o.decimation << (o.small ? ", small-landmark mode" : "") << (o.equalRings ? "" : ", no equal-ring check")
-            << (o.blurModel ? "" : ", no blurred-ring model") << ", " << photos.size() << " photos; wall time "
-            << seconds << " s on " << o.threads << " thread(s).\n\n";
+            << (o.blurModel ? "" : ", no blurred-ring model") << (o.completion ? "" : ", no target completion") << ", "
+            << photos.size() << " photos; wall time " << seconds << " s on " << o.threads << " thread(s).\n\n";
   evaluator.printTables(std::cout);
 
   const std::string csv = o.outputDir + "/corpus.csv";

@@ -62,6 +62,9 @@ Options:
                       (vpSSLDetector::setEqualRingCheck(false); on by default, doc/detector.md).
   --no-blur-model     Do not read faint blurred landmarks from their ring profile's blurred
                       model (vpSSLDetector::setBlurredRingModel(false); doc/detector.md).
+  --no-target-completion
+                      Do not read the target's missing landmarks where its big one puts them
+                      (vpSSLDetector::setTargetCompletion(false); doc/detector.md).
   --decimation D      1 (default) or 2: with 2, the matching function runs on the image
                       decimated twice (the fast mode, for landmarks of about 25 px and more),
                       the rings are still read at full resolution.
@@ -214,7 +217,8 @@ int run(int argc, char **argv)
 {
   std::string input, outputDir;
   ssltut::CameraTargetOptions camera;
-  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = true, blurModel = true;
+  bool json = false, display = false, normalize = true, smallLandmarks = false, equalRings = true, blurModel = true,
+       completion = true;
   unsigned int window = 40, threads = 0, decimation = 1;
   double threshold = 0.07;
   long maxFrames = -1;
@@ -243,6 +247,8 @@ int run(int argc, char **argv)
       equalRings = false;
     } else if (a == "--no-blur-model") {
       blurModel = false;
+    } else if (a == "--no-target-completion") {
+      completion = false;
     } else if (a == "--decimation") {
       decimation = static_cast<unsigned int>(integer(value(), 1, 2));
     } else if (a == "--no-normalize") {
@@ -325,6 +331,7 @@ int run(int argc, char **argv)
   detector.setSmallLandmarkMode(smallLandmarks);
   detector.setEqualRingCheck(equalRings);
   detector.setBlurredRingModel(blurModel);
+  detector.setTargetCompletion(completion);
   detector.setDecimation(decimation);
   detector.setBrightnessNormalization(normalize);
   detector.setNbThreads(threads);

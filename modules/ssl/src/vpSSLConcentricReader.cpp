@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
 #include <visp3/core/vpException.h>
+
+#include "vpSSLSymmetryKernel.h"
 
 namespace {
 // Profile bins per period of the rings (a factor 1 / p of radius).
@@ -78,6 +81,10 @@ const double kModelSectorCorrelation = 0.3;
 const double kModelSectorShare = 0.75;
 const double kModelMinRadius = 8.;
 const double kModelSnr = 2.;
+// readAt(): the largest move of the given centre by the gradients' fit, in minor semi-axes.
+const double kShapedShift = 0.35;
+// readAt(): the outer ring read lies within this factor of the one given (either way).
+const double kShapedSize = 0.7;
 
 // The rings' radial profile at rho, blurred by a Gaussian of sigma (same units): white paper (1) outside the outer
 // radius R, then each printed edge inwards a blurred step, down at R, up at R sqrt(p), down at R p, ... (edgeRatio =
@@ -566,6 +573,66 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
     bestRadius = rawRadius;
   }
   m_quality = best.quality;
+  m_outerLow = 0.;
+  m_outerHigh = std::numeric_limits<double>::infinity();
+  return readRings(I, best, bestRadius, landmark);
+}
+
+bool vpSSLConcentricReader::readAt(const vpImage<unsigned char> &I, vpSSLLandmark &landmark)
+{
+  m_stage = 1;
+  m_quality = 0.;
+  m_similarity = 0.;
+  m_profileTauR = 0.;
+  const double a = landmark.radius, b = landmark.minorRadius;
+  if (I.getWidth() < 8 || I.getHeight() < 8 || !(b > 0. && a >= b) || !std::isfinite(landmark.u) ||
+      !std::isfinite(landmark.v) || !std::isfinite(landmark.theta)) {
+    return false;
+  }
+  // The ellipses of the given shape, (x - c)^T Q (x - c) = rho^2 with det Q = 1: rho is the geometric mean of the
+  // semi-axes, and the outer ring lies at rho = sqrt(a b).
+  const double c = std::cos(landmark.theta), s = std::sin(landmark.theta), ab = a * b;
+  Fit f;
+  f.u = landmark.u;
+  f.v = landmark.v;
+  f.q[0] = ab * (c * c / (a * a) + s * s / (b * b));
+  f.q[1] = ab * c * s * (1. / (a * a) - 1. / (b * b));
+  f.q[2] = ab * (s * s / (a * a) + c * c / (b * b));
+  f.quality = 1.;
+  const double rho = std::sqrt(ab);
+  // The centre where the disc inside the outer ring best matches its half-turn (a landmark is point-symmetric under
+  // any affine view and symmetric blur, however blurred its rings), followed over a few search windows, as long as
+  // it stays within kShapedShift minor semi-axes of the centre given; the shape stays the one given, which a faint
+  // landmark's few gradients would pull about.
+  const int radius = std::max(2, std::min(vpSSLSymmetryKernel::kMaxRadius, static_cast<int>(std::lround(b))));
+  if (radius != m_symmetryRadius) {
+    vpSSLSymmetryKernel::halfDisc(radius, m_symmetrySpans);
+    m_symmetryRadius = radius;
+  }
+  double u = f.u, v = f.v, asymmetry = 0.;
+  for (int step = 0; step < 4; ++step) {
+    const double u0 = u, v0 = v;
+    if (!vpSSLSymmetryKernel::centre(I, radius, m_symmetrySpans, 0., m_symmetryBuffer, u, v, asymmetry) ||
+        std::hypot(u - f.u, v - f.v) > kShapedShift * b) {
+      u = u0;
+      v = v0;
+      break;
+    }
+    if (std::fabs(u - u0) < 2.5 && std::fabs(v - v0) < 2.5) {
+      break;
+    }
+  }
+  f.u = u;
+  f.v = v;
+  // Only a copy of about the size given: the rings of one landmark hold copies of every size below its own.
+  m_outerLow = kShapedSize * rho;
+  m_outerHigh = rho / kShapedSize;
+  return readRings(I, f, rho, landmark);
+}
+
+bool vpSSLConcentricReader::readRings(const vpImage<unsigned char> &I, Fit best, double bestRadius,
+                                      vpSSLLandmark &landmark)
+{
   const double limit = 1.5 * m_maxRadius;
 
   // 2. The rings' phase from the radial profile of every resolved ring inside the fitted disc. In
@@ -620,7 +687,7 @@ bool vpSSLConcentricReader::read(const vpImage<unsigned char> &I, vpSSLLandmark 
   for (int k = static_cast<int>(std::floor(tauHigh - phase)); k >= -2; --k) {
     const double tR = phase + k;
     const double R = std::exp(tR * L);
-    if (tR > tauHigh - 0.05 || R < m_minRadius) {
+    if (tR > tauHigh - 0.05 || R < m_minRadius || R < m_outerLow || R > m_outerHigh) {
       continue;
     }
     const double black = band(tR - 0.4, tR - 0.1, -1), white = band(tR - 0.9, tR - 0.6, -1);
@@ -821,7 +888,8 @@ double vpSSLConcentricReader::blurredOuter(const double *level, double phase, do
     double best = -1., bestR = 0., bestSigma = 0., amplitude = 0., a = 0.;
     auto tryEdge = [&](double tR, double sigmaPx) {
       const double R = std::exp(tR * m_logStep);
-      if (tR > tauHigh - 0.15 || R * pxPerRho < kModelMinRadius || R < m_minRadius) {
+      if (tR > tauHigh - 0.15 || R * pxPerRho < kModelMinRadius || R < m_minRadius || R < m_outerLow ||
+          R > m_outerHigh) {
         return;
       }
       const double c = modelCorrelation(level, -1, R, sigmaPx / pxPerRho, true, pxPerRho, a);
@@ -841,15 +909,15 @@ double vpSSLConcentricReader::blurredOuter(const double *level, double phase, do
         tryEdge(phase + k + j * kModelShift, sigmaPx);
       }
     }
-    if (best < kModelCorrelation || amplitude <= 0.) {
-      continue;
-    }
     // Blur that greys every ring leaves a dark disc, which a dark blob matches as well.
     double disc = -1.;
     for (double scale : {0.9, 1., 1.1}) {
       for (double s : kModelSigmas) {
         disc = std::max(disc, modelCorrelation(level, -1, scale * bestR, s / pxPerRho, false, pxPerRho, a));
       }
+    }
+    if (best < kModelCorrelation || amplitude <= 0.) {
+      continue;
     }
     if (best - disc < kModelDiscMargin) {
       continue;

@@ -95,6 +95,17 @@ const double kMinSimilarity = 0.5;
 // (px, in u and in v) a candidate's symmetric centre must be to one read in vain to be skipped.
 const unsigned int kAllAroundBudget = 24;
 const double kSameCentre = 1.5;
+// completeTarget(): rotations tried (the target's, or the best scanned), the most landmarks read per rotation, the
+// scan's step (in predicted minor semi-axes at the predicted centre) and its largest count, how far apart two tried
+// rotations are (rad), and how close to its prediction (in predicted radii) and of what size (radius ratio) a reading
+// must be.
+const size_t kPredictedRotations = 3;
+const size_t kMaxTargetLandmarks = 8;
+const double kRotationStep = 0.3;
+const int kMaxRotations = 360;
+const double kRotationSeparation = 0.35;
+const double kPredictedReach = 0.5;
+const double kPredictedSize = 0.7;
 
 // Smallest semi-axis, relative to the window, of a predicted landmark whose region of a tracking frame is matched on
 // the decimated image (vpSSLRegionPlanner::splitByResolution()).
@@ -111,7 +122,7 @@ double elapsedMs(std::chrono::steady_clock::time_point &t)
 
 vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
     : m_normalizer(), m_match(40, target.getP()), m_peakDetector(), m_radiusEstimator(), m_identifier(target),
-      m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
+      m_prediction(target), m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
       m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_matchHalf(halfWindow(40), target.getP()),
       m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(true), m_threshold(0.07), m_planner(), m_noRois(),
@@ -122,6 +133,11 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
   m_radiusEstimator.setP(target.getP());
   m_concentricReader.setP(target.getP());
   m_concentricReader.setBlurredRingModel(true);
+  for (size_t k = 1; k < target.size(); ++k) {
+    if (target.getLandmark(k).radius > target.getLandmark(m_bigLandmark).radius) {
+      m_bigLandmark = k;
+    }
+  }
 }
 
 void vpSSLDetectionPipeline::setWindow(unsigned int w)
@@ -274,6 +290,20 @@ void vpSSLDetectionPipeline::detect(const vpImage<unsigned char> &I)
 
   m_identifier.identify(m_landmarks, m_targetMatch);
   m_times.identification = elapsedMs(t);
+  // Twice: a landmark read where a scanned rotation put it gives the target's rotation for the others. Its ring
+  // readings count with the others.
+  for (int round = 0; round < 2 && m_targetCompletion && m_lastSearchWasFull && m_decimation == 1 && !m_upsample &&
+                      m_shortWindow != 0 && completeTarget(*raw);
+       ++round) {
+    for (size_t i = 1; i < m_landmarks.size(); ++i) {
+      for (size_t j = i; j > 0 && m_landmarks[j - 1].score < m_landmarks[j].score; --j) {
+        std::swap(m_landmarks[j - 1], m_landmarks[j]);
+      }
+    }
+    m_planner.remember(m_landmarks);
+    m_identifier.identify(m_landmarks, m_targetMatch);
+  }
+  m_times.radius += elapsedMs(t);
 }
 
 void vpSSLDetectionPipeline::searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &rawImage,
@@ -582,12 +612,16 @@ void vpSSLDetectionPipeline::planCandidateRegions(const vpImage<unsigned char> &
   }
 }
 
-bool vpSSLDetectionPipeline::insideFound(double u, double v) const
+bool vpSSLDetectionPipeline::insideFound(double u, double v, int skip) const
 {
   // The white paper just outside the outermost black ring continues the pattern by one ring (out to
   // R / sqrt(p), vpSSLRadiusEstimator), so the matching map has a ridge of peaks there too.
   const double margin2 = 1. / getTarget().getP();
-  for (const vpSSLLandmark &k : m_landmarks) {
+  for (size_t i = 0; i < m_landmarks.size(); ++i) {
+    if (static_cast<int>(i) == skip) {
+      continue;
+    }
+    const vpSSLLandmark &k = m_landmarks[i];
     const double c = std::cos(k.theta), s = std::sin(k.theta), du = u - k.u, dv = v - k.v;
     const double x = (c * du + s * dv) / k.radius, y = (c * dv - s * du) / k.minorRadius;
     if (x * x + y * y < margin2) {
@@ -642,6 +676,186 @@ bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vp
   }
   l = c;
   return true;
+}
+
+bool vpSSLDetectionPipeline::completeTarget(const vpImage<unsigned char> &raw)
+{
+  // The big landmark is read from the farthest, the others, half its size or less, are often missed beside it: their
+  // peaks fall under those of the surroundings, or their rings pass no test alone. Where the big one's ellipse puts
+  // them, at the size it gives them, they are read again: a reading must land there and at that size.
+  const size_t K = getTarget().size();
+  const int anchorIndex = m_targetMatch.found ? m_targetMatch.detection[m_bigLandmark] : -1;
+  if (anchorIndex < 0 || m_targetMatch.nbMatched >= K) {
+    return false;
+  }
+  const vpSSLLandmark anchor = m_landmarks[static_cast<size_t>(anchorIndex)];
+  // The hypotheses: a rotation of the target about the plane's normal, and the big landmark's true size relative to
+  // its reading (1, or p where the paper and dark surroundings past its outer ring were read as one more ring: the
+  // other landmarks then lie inside the disc read, where no peak is read).
+  Hypothesis hypotheses[kPredictedRotations];
+  size_t nbHypotheses = 0;
+  for (size_t k = 0; k < K && nbHypotheses == 0; ++k) {
+    const int d = m_targetMatch.detection[k];
+    if (k != m_bigLandmark && d >= 0) {
+      m_prediction.setAnchor(anchor, m_bigLandmark);
+      hypotheses[nbHypotheses++] = {m_prediction.rotationTo(m_landmarks[static_cast<size_t>(d)], k), 1.};
+    }
+  }
+  if (nbHypotheses == 0) {
+    scanRotations(anchor, hypotheses, nbHypotheses);
+  }
+  const int W = static_cast<int>(raw.getWidth()), H = static_cast<int>(raw.getHeight());
+  vpSSLLandmark read[kMaxTargetLandmarks];
+  for (size_t h = 0; h < nbHypotheses; ++h) {
+    const Hypothesis &hyp = hypotheses[h];
+    const vpSSLLandmark scaled = scaledLandmark(anchor, hyp.scale);
+    m_prediction.setAnchor(scaled, m_bigLandmark);
+    size_t nbRead = 0, nbMissing = 0;
+    for (size_t j = 0; j < K && nbRead < kMaxTargetLandmarks; ++j) {
+      if (m_targetMatch.detection[j] >= 0) {
+        continue;
+      }
+      ++nbMissing;
+      const vpSSLLandmark p = m_prediction.predict(j, hyp.phi);
+      if (!(p.minorRadius >= kMinRadius && p.u >= 0. && p.v >= 0. && p.u <= W - 1. && p.v <= H - 1.) ||
+          insideFound(p.u, p.v, hyp.scale == 1. ? -1 : anchorIndex)) {
+        continue;
+      }
+      if (readPredicted(raw, p, read[nbRead])) {
+        read[nbRead].score = scoreAt(raw, read[nbRead].u, read[nbRead].v);
+        ++nbRead;
+      }
+    }
+    // A smaller big landmark than read is believed only when every landmark it predicts is there.
+    if (nbRead == 0 || (hyp.scale != 1. && nbRead < nbMissing)) {
+      continue;
+    }
+    if (hyp.scale != 1.) {
+      vpSSLLandmark big = scaled;
+      if (m_radiusEstimator.estimate(raw, big, scaled) && selfSimilar(raw, big)) {
+        big.score = anchor.score;
+      } else {
+        big = scaled;
+      }
+      m_landmarks[static_cast<size_t>(anchorIndex)] = big;
+    }
+    bool added = false;
+    for (size_t i = 0; i < nbRead; ++i) {
+      added = keepLandmark(read[i], raw, raw, true, 1.) || added;
+    }
+    return added || hyp.scale != 1.;
+  }
+  return false;
+}
+
+vpSSLLandmark vpSSLDetectionPipeline::scaledLandmark(const vpSSLLandmark &l, double scale)
+{
+  vpSSLLandmark s = l;
+  s.radius *= scale;
+  s.minorRadius *= scale;
+  for (double &r : s.directionalRadius) {
+    r *= scale;
+  }
+  return s;
+}
+
+void vpSSLDetectionPipeline::scanRotations(const vpSSLLandmark &anchor, Hypothesis *hypotheses, size_t &nbHypotheses)
+{
+  // The rotations whose predicted landmarks the short-window maps answer most strongly, a few far enough apart, for
+  // either size of the big landmark. Steps move each predicted centre by at most kRotationStep of its predicted minor
+  // semi-axis.
+  const size_t K = getTarget().size();
+  const double scales[2] = {1., getTarget().getP()};
+  m_rotationScore.clear();
+  int n[2] = {0, 0};
+  for (int si = 0; si < 2; ++si) {
+    m_prediction.setAnchor(scaledLandmark(anchor, scales[si]), m_bigLandmark);
+    double step = 2. * M_PI;
+    for (size_t j = 0; j < K; ++j) {
+      const double reach = m_prediction.reach(j);
+      if (j != m_bigLandmark && reach > 0.) {
+        step = std::min(step, kRotationStep * m_prediction.predict(j, 0.).minorRadius / reach);
+      }
+    }
+    n[si] = std::max(1, std::min(kMaxRotations, static_cast<int>(std::ceil(2. * M_PI / step))));
+    for (int i = 0; i < n[si]; ++i) {
+      const double phi = 2. * M_PI * i / n[si];
+      double score = 0.;
+      for (size_t j = 0; j < K; ++j) {
+        if (m_targetMatch.detection[j] < 0) {
+          score += shortWindowScore(m_prediction.predict(j, phi));
+        }
+      }
+      m_rotationScore.push_back(score);
+    }
+  }
+  nbHypotheses = 0;
+  while (nbHypotheses < kPredictedRotations) {
+    int best = -1, bestScale = 0;
+    size_t index = 0;
+    double bestScore = 0.;
+    for (int si = 0; si < 2; ++si) {
+      for (int i = 0; i < n[si]; ++i, ++index) {
+        const double phi = 2. * M_PI * i / n[si];
+        bool apart = true;
+        for (size_t r = 0; r < nbHypotheses; ++r) {
+          apart = apart && (hypotheses[r].scale != scales[si] ||
+                            std::fabs(std::remainder(phi - hypotheses[r].phi, 2. * M_PI)) >= kRotationSeparation);
+        }
+        if (apart && m_rotationScore[index] > bestScore) {
+          bestScore = m_rotationScore[index];
+          best = i;
+          bestScale = si;
+        }
+      }
+    }
+    if (best < 0) {
+      break;
+    }
+    hypotheses[nbHypotheses++] = {2. * M_PI * best / n[bestScale], scales[bestScale]};
+  }
+}
+
+double vpSSLDetectionPipeline::shortWindowScore(const vpSSLLandmark &p) const
+{
+  const double shortMax = m_matchShort.getMaxValue();
+  double best = 0.;
+  auto look = [&](const vpImage<int> &map, double u, double v) {
+    const int W = static_cast<int>(map.getWidth()), H = static_cast<int>(map.getHeight());
+    const int cu = static_cast<int>(std::lround(u)), cv = static_cast<int>(std::lround(v));
+    for (int y = std::max(0, cv - 2); y <= std::min(H - 1, cv + 2); ++y) {
+      for (int x = std::max(0, cu - 2); x <= std::min(W - 1, cu + 2); ++x) {
+        best = std::max(best, map[y][x] / shortMax);
+      }
+    }
+  };
+  look(m_shortMap, p.u, p.v);
+  // Pixel j of the half image is centred on pixel 2 j + 0.5 of the image.
+  look(m_shortHalfMap, 0.5 * (p.u - 0.5), 0.5 * (p.v - 0.5));
+  return best;
+}
+
+bool vpSSLDetectionPipeline::readPredicted(const vpImage<unsigned char> &raw, const vpSSLLandmark &p, vpSSLLandmark &l)
+{
+  l = p;
+  if (!(m_radiusEstimator.estimate(raw, l, p) && selfSimilar(raw, l))) {
+    l = p;
+    if (!m_concentricReader.read(raw, l)) {
+      l = p;
+      if (!m_concentricReader.readAt(raw, l)) {
+        return false;
+      }
+    }
+    if (m_equalRingCheck) {
+      m_concentricReader.similarity(raw, l);
+      if (m_concentricReader.isEqualRings()) {
+        return false;
+      }
+    }
+  }
+  const double ratio = l.radius / p.radius;
+  return std::hypot(l.u - p.u, l.v - p.v) <= std::max(2., kPredictedReach * p.radius) && ratio >= kPredictedSize &&
+         ratio <= 1. / kPredictedSize;
 }
 
 bool vpSSLDetectionPipeline::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw,

@@ -23,6 +23,7 @@
 #include <visp3/ssl/vpSSLTargetIdentifier.h>
 
 #include "vpSSLRegionPlanner.h"
+#include "vpSSLTargetPrediction.h"
 
 /*
   The settings and the working storage of vpSSLDetector's detection, and its results. Every setting and result
@@ -53,6 +54,7 @@ public:
   void setSmallLandmarkMode(bool enable);
   void setEqualRingCheck(bool enable) { m_equalRingCheck = enable; }
   void setBlurredRingModel(bool enable) { m_concentricReader.setBlurredRingModel(enable); }
+  void setTargetCompletion(bool enable) { m_targetCompletion = enable; }
   void setShortWindow(unsigned int w);
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
 
@@ -64,6 +66,7 @@ public:
   bool getSmallLandmarkMode() const { return m_upsample; }
   bool getEqualRingCheck() const { return m_equalRingCheck; }
   bool getBlurredRingModel() const { return m_concentricReader.getBlurredRingModel(); }
+  bool getTargetCompletion() const { return m_targetCompletion; }
   unsigned int getShortWindow() const { return m_shortWindow; }
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
   bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
@@ -91,12 +94,30 @@ private:
   // on the image decimated twice (\e coarse), then the ring reading of the peaks; the stage times are added up.
   void searchRegions(const vpImage<unsigned char> &I, const vpImage<unsigned char> &raw, bool coarse,
                      const std::vector<vpRect> *regions, double scale, std::chrono::steady_clock::time_point &t);
-  // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame.
-  bool insideFound(double u, double v) const;
+  // Whether (u, v) (image pixels) lies within R / sqrt(p) of a landmark found this frame, but landmark \e skip.
+  bool insideFound(double u, double v, int skip = -1) const;
   // Whether the ring profile inside \e l's outer ellipse follows s_p (vpSSLConcentricReader::similarity()).
   bool selfSimilar(const vpImage<unsigned char> &raw, const vpSSLLandmark &l);
   // Where the rays' reading rejects a point-symmetric candidate: vpSSLConcentricReader from its symmetric centre.
   bool readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
+  // Full search at full resolution, once the target is identified: reads the target's landmarks that the match
+  // lacks where the big landmark's ellipse puts them (vpSSLTargetPrediction); whether it added any.
+  bool completeTarget(const vpImage<unsigned char> &raw);
+  // A rotation of the target in the rectified image (rad) and the big landmark's size over its reading.
+  struct Hypothesis
+  {
+    double phi;
+    double scale;
+  };
+  // completeTarget() without a second landmark: the best rotations scanned, for either size of the big landmark.
+  void scanRotations(const vpSSLLandmark &anchor, Hypothesis *hypotheses, size_t &nbHypotheses);
+  // \e l with its outer ellipse scaled by \e scale.
+  static vpSSLLandmark scaledLandmark(const vpSSLLandmark &l, double scale);
+  // The short-window maps' strongest value (over their largest) within 2 px of \e p's centre.
+  double shortWindowScore(const vpSSLLandmark &p) const;
+  // Reads the landmark predicted as \e p (rays within 11 % of its ellipse, else all around from its centre) into
+  // \e l: whether one passes the checks of a full search, near \e p's centre and of \e p's size.
+  bool readPredicted(const vpImage<unsigned char> &raw, const vpSSLLandmark &p, vpSSLLandmark &l);
   // Sets \e map to I's size and to 0 where the last call wrote it.
   void clearMap(const vpImage<unsigned char> &I, MatchMap &map);
   void matchRegions(const vpSSLMatchingFunction &match, const vpImage<unsigned char> &I,
@@ -129,6 +150,9 @@ private:
   unsigned int m_allAroundLeft = 0;           // candidates vpSSLConcentricReader may still read this frame
   std::vector<vpImagePoint> m_allAroundTried; // centres it read nothing at this frame
   vpSSLTargetIdentifier m_identifier;
+  vpSSLTargetPrediction m_prediction;
+  size_t m_bigLandmark = 0;            // the target's biggest landmark, the anchor of completeTarget()
+  std::vector<double> m_rotationScore; // completeTarget(): the short-window score of each rotation scanned
   bool m_normalize;
   bool m_upsample;
   unsigned int m_window;
@@ -144,6 +168,7 @@ private:
   double m_maxRadius;
   bool m_radiusSweep;
   bool m_equalRingCheck;
+  bool m_targetCompletion = true;
   double m_threshold;
   vpSSLRegionPlanner m_planner;
   std::vector<vpRect> m_noRois; // always empty: the whole image

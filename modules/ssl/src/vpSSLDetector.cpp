@@ -87,6 +87,14 @@ bool vpSSLDetector::getBlurredRingModel() const
 {
   return m_impl->getBlurredRingModel();
 }
+void vpSSLDetector::setTargetCompletion(bool enable)
+{
+  m_impl->setTargetCompletion(enable);
+}
+bool vpSSLDetector::getTargetCompletion() const
+{
+  return m_impl->getTargetCompletion();
+}
 void vpSSLDetector::setShortWindow(unsigned int w)
 {
   m_impl->setShortWindow(w);

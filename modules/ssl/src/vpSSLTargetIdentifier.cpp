@@ -6,36 +6,13 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLEllipseMap.h"
+
 namespace {
-// Affine map of the unit circle onto a landmark's outer ellipse: undoing it rectifies the target plane
-// locally, up to a rotation, a scale and without changing its orientation (its determinant is > 0).
-struct Ellipse2x2 // the map and its inverse
-{
-  double m[2][2];
-  double inv[2][2];
-};
-
-Ellipse2x2 ellipseMap(const vpSSLLandmark &l)
-{
-  const double a = l.radius, b = l.minorRadius > 0. ? l.minorRadius : l.radius;
-  const double c = std::cos(l.theta), s = std::sin(l.theta);
-  Ellipse2x2 e;
-  e.m[0][0] = a * c * c + b * s * s;
-  e.m[0][1] = (a - b) * c * s;
-  e.m[1][0] = e.m[0][1];
-  e.m[1][1] = a * s * s + b * c * c;
-  const double ia = 1. / a, ib = 1. / b;
-  e.inv[0][0] = ia * c * c + ib * s * s;
-  e.inv[0][1] = (ia - ib) * c * s;
-  e.inv[1][0] = e.inv[0][1];
-  e.inv[1][1] = ia * s * s + ib * c * c;
-  return e;
-}
-
 // identify()'s buffers, reused from call to call so that it does not allocate once they have grown.
 struct IdentifyScratch
 {
-  std::vector<Ellipse2x2> maps;
+  std::vector<vpSSLEllipseMap> maps;
   std::vector<int> hypDetection; // target-landmark labels, K per hypothesis
   std::vector<unsigned int> hypCount;
   std::vector<double> hypResidual;
@@ -85,10 +62,10 @@ void vpSSLTargetIdentifier::identify(const std::vector<vpSSLLandmark> &landmarks
     return;
   }
   IdentifyScratch &scratch = identifyScratch();
-  std::vector<Ellipse2x2> &maps = scratch.maps;
+  std::vector<vpSSLEllipseMap> &maps = scratch.maps;
   maps.resize(N);
   for (size_t i = 0; i < N; ++i) {
-    maps[i] = ellipseMap(landmarks[i]);
+    maps[i] = vpSSLEllipseMap(landmarks[i]);
   }
   const std::vector<vpSSLTargetLandmark> &model = m_target.getLandmarks();
 

@@ -5,6 +5,9 @@
 #ifndef VP_SSL_CONCENTRIC_READER_H
 #define VP_SSL_CONCENTRIC_READER_H
 
+#include <cstdint>
+#include <vector>
+
 #include <visp3/core/vpImage.h>
 #include <visp3/ssl/vpSSLConfig.h>
 #include <visp3/ssl/vpSSLLandmark.h>
@@ -46,6 +49,16 @@ public:
     \return false if no landmark is read there.
   */
   bool read(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
+
+  /*!
+    As read(), but where the landmark's outer ellipse is already known roughly (\e landmark.radius, minorRadius and
+    theta, predicted from another landmark of the target): the rings are read about ellipses of that shape, from the
+    centre (\e landmark.u, \e landmark.v) moved to where the disc inside the outer ring is most point-symmetric,
+    instead of about the ellipses the gradients fit, which need rings well above the noise to lock; the outer ring
+    read lies within a factor 0.7 of the one given, either way. Every test of read() on the rings applies.
+    \return false if no landmark is read there.
+  */
+  bool readAt(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
 
   //! Stage at which the last read() stopped: 1 the fit, 2 the phase, 3 the outer ring, 4 read.
   int getStage() const { return m_stage; }
@@ -100,6 +113,8 @@ private:
   };
   bool fit(const vpImage<unsigned char> &I, double radius, int iterations, double gridSide, bool smooth, Fit &f) const;
   bool grow(const vpImage<unsigned char> &I, double u, double v, bool smooth, Fit &best, double &bestRadius) const;
+  // Stages 2-5 of read() on the ellipses of \e best, locked on a disc of \e bestRadius (rho units).
+  bool readRings(const vpImage<unsigned char> &I, Fit best, double bestRadius, vpSSLLandmark &landmark);
   bool readProfile(const vpImage<unsigned char> &I, const Fit &f, double tauLow, double tauHigh);
   double band(double tau0, double tau1, int sector) const;
   void allAround(double *level) const;
@@ -112,6 +127,12 @@ private:
   double m_p;
   double m_logStep; // log(1 / p): one period of the rings in log radius
   double m_minRadius, m_maxRadius;
+  // readAt()'s symmetry centring: the half disc's rows and the kernel's scratch, kept between calls.
+  int m_symmetryRadius = 0;
+  // The outer radii (rho units) that the outer ring may take: any for read(), about the one given for readAt().
+  double m_outerLow = 0., m_outerHigh = 0.;
+  std::vector<int> m_symmetrySpans;
+  std::vector<int16_t> m_symmetryBuffer;
   int m_stage;
   double m_quality;
   double m_similarity;
