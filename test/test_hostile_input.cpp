@@ -15,6 +15,7 @@
 #include <visp3/core/vpException.h>
 #include <visp3/io/vpImageIo.h>
 #include <visp3/ssl/vpSSLBrightnessNormalizer.h>
+#include <visp3/ssl/vpSSLConcentricReader.h>
 #include <visp3/ssl/vpSSLInputLimits.h>
 #include <visp3/ssl/vpSSLMatchingFunction.h>
 #include <visp3/ssl/vpSSLPeakDetector.h>
@@ -108,6 +109,11 @@ TEST(HostileImage, WrappedSizeIsRejectedByEveryEntryPoint)
   std::vector<vpSSLPeak> peaks;
   vpSSLPeakDetector peakDetector;
   EXPECT_HAS(errorOf([&] { peakDetector.detect(map, peaks); }), "vpSSLPeakDetector::detect");
+  vpSSLLandmark predicted;
+  predicted.u = predicted.v = 100.;
+  predicted.radius = predicted.minorRadius = 20.;
+  vpSSLConcentricReader reader;
+  EXPECT_HAS(errorOf([&] { reader.readAt(I, predicted); }), "vpSSLConcentricReader::readAt: 65537 x 65536 pixels");
   vpCameraParameters cam;
   cam.initPersProjWithoutDistortion(554.3, 554.3, 320, 240);
   vpSSLTracker tracker(vpSSLTarget::ssl3a3(), cam);

@@ -8,6 +8,7 @@
 
 #include <visp3/core/vpException.h>
 
+#include "vpSSLImageCheck.h"
 #include "vpSSLSymmetryKernel.h"
 
 namespace {
@@ -81,7 +82,7 @@ const double kModelSectorCorrelation = 0.3;
 const double kModelSectorShare = 0.75;
 const double kModelMinRadius = 8.;
 const double kModelSnr = 2.;
-// readAt(): the largest move of the given centre by the gradients' fit, in minor semi-axes.
+// readAt(): the largest move of the given centre by the symmetry centring, in minor semi-axes.
 const double kShapedShift = 0.35;
 // readAt(): the outer ring read lies within this factor of the one given (either way).
 const double kShapedSize = 0.7;
@@ -584,6 +585,8 @@ bool vpSSLConcentricReader::readAt(const vpImage<unsigned char> &I, vpSSLLandmar
   m_quality = 0.;
   m_similarity = 0.;
   m_profileTauR = 0.;
+  // The symmetry kernel's sums hold for images within the kernels' bounds only.
+  vpSSLImageCheck::kernel(I, "vpSSLConcentricReader::readAt");
   const double a = landmark.radius, b = landmark.minorRadius;
   if (I.getWidth() < 8 || I.getHeight() < 8 || !(b > 0. && a >= b) || !std::isfinite(landmark.u) ||
       !std::isfinite(landmark.v) || !std::isfinite(landmark.theta)) {

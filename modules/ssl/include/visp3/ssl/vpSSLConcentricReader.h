@@ -57,6 +57,8 @@ public:
     instead of about the ellipses the gradients fit, which need rings well above the noise to lock; the outer ring
     read lies within a factor 0.7 of the one given, either way. Every test of read() on the rings applies.
     \return false if no landmark is read there.
+    \exception vpException (dimensionError) if \e I does not hold its width x height pixels or exceeds twice the
+    input limits of vpSSLInputLimits a side.
   */
   bool readAt(const vpImage<unsigned char> &I, vpSSLLandmark &landmark);
 
