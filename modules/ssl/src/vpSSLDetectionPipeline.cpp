@@ -25,6 +25,13 @@ const unsigned int kShortWindow = 10;
 // has many more peaks over the threshold than w = 40, and the 16 strongest find every small landmark the 64
 // strongest do on the independent corpus (doc/detector.md).
 const unsigned int kShortWindowPeaks = 16;
+// Window of a full search on the image's quarter (80 px in image pixels): the landmarks of 40 px and more whose
+// inner rings a blur of 2 to 3 px has wiped out, and which neither w = 40 nor the short window then answers. On the
+// quarter their outer rings are sharp (the blur is a quarter as wide). Its strongest kQuarterPeaks peaks are read
+// after every other, so that it only adds landmarks: the reading budget of the others is spent first. A handful of
+// large landmarks fits in a frame; on noisy water the weaker peaks of that map are noise, each read all around.
+const unsigned int kQuarterWindow = 20;
+const unsigned int kQuarterPeaks = 8;
 // A full search at full resolution computes w only where the image's half, matched with w / 2 (the same radii), has
 // a local maximum over kCandidateThreshold of the peak threshold: in the tiles of kCandidateTile px within
 // kCandidateReach px of it (the full-resolution peak lies within 2-4 px of the half image's).
@@ -95,17 +102,27 @@ const double kMinSimilarity = 0.5;
 // (px, in u and in v) a candidate's symmetric centre must be to one read in vain to be skipped.
 const unsigned int kAllAroundBudget = 24;
 const double kSameCentre = 1.5;
-// completeTarget(): rotations tried (the target's, or the best scanned), the most landmarks read per rotation, the
-// scan's step (in predicted minor semi-axes at the predicted centre) and its largest count, how far apart two tried
-// rotations are (rad), and how close to its prediction (in predicted radii) and of what size (radius ratio) a reading
-// must be.
+// completeTarget(): rotations tried (the target's, or the best scanned), those a detection left out of the match
+// gives, the most landmarks read per rotation, the scan's step (in predicted minor semi-axes at the predicted centre)
+// and its largest count, how far apart two tried rotations are (rad), and how close to its prediction (in predicted
+// radii) and of what size (radius ratio) a reading must be.
 const size_t kPredictedRotations = 3;
+const size_t kDetectionRotations = 8;
+const double kDetectionReach = 0.25;
 const size_t kMaxTargetLandmarks = 8;
 const double kRotationStep = 0.3;
 const int kMaxRotations = 360;
 const double kRotationSeparation = 0.35;
 const double kPredictedReach = 0.5;
 const double kPredictedSize = 0.7;
+
+// Whether the landmark \e l lies where \e p is predicted, and is of its size.
+bool asPredicted(const vpSSLLandmark &l, const vpSSLLandmark &p)
+{
+  const double ratio = l.radius / p.radius;
+  return std::hypot(l.u - p.u, l.v - p.v) <= std::max(2., kPredictedReach * p.radius) && ratio >= kPredictedSize &&
+         ratio <= 1. / kPredictedSize;
+}
 
 // Smallest semi-axis, relative to the window, of a predicted landmark whose region of a tracking frame is matched on
 // the decimated image (vpSSLRegionPlanner::splitByResolution()).
@@ -125,10 +142,11 @@ vpSSLDetectionPipeline::vpSSLDetectionPipeline(const vpSSLTarget &target)
       m_prediction(target), m_normalize(true), m_upsample(false), m_window(40), m_decimation(1),
       m_matchCoarse(coarseWindow(40), target.getP()), m_shortWindow(kShortWindow),
       m_matchShort(kShortWindow, target.getP()), m_shortPeakDetector(), m_matchHalf(halfWindow(40), target.getP()),
-      m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(true), m_threshold(0.07), m_planner(), m_noRois(),
-      m_lastSearchWasFull(true)
+      m_matchQuarter(kQuarterWindow, target.getP()), m_maxRadius(300.), m_radiusSweep(false), m_equalRingCheck(true),
+      m_threshold(0.07), m_planner(), m_noRois(), m_lastSearchWasFull(true)
 {
   m_shortPeakDetector.setMaxPeaks(kShortWindowPeaks);
+  m_quarterPeakDetector.setMaxPeaks(kQuarterPeaks);
   m_allAroundTried.reserve(kAllAroundBudget);
   m_radiusEstimator.setP(target.getP());
   m_concentricReader.setP(target.getP());
@@ -534,11 +552,30 @@ void vpSSLDetectionPipeline::addShortWindowPeaks(const vpImage<unsigned char> &n
     m_matchShort.compute(m_shortHalf, m_shortHalfMap);
     addPeaks(m_shortHalfMap, true);
   }
+
   // Strongest first, ties in row-major order: std::sort allocates nothing, and the order is total.
   std::sort(m_peaks.begin(), m_peaks.end(), [](const vpSSLPeak &a, const vpSSLPeak &b) {
     return a.value != b.value ? a.value > b.value : (a.v != b.v ? a.v < b.v : a.u < b.u);
   });
   m_times.peaks += elapsedMs(t);
+  const int Wq = Wh / 2, Hq = Hh / 2;
+  if (Wq > 0 && Hq > 0) {
+    m_shortQuarter.resize(static_cast<unsigned int>(Hq), static_cast<unsigned int>(Wq));
+    decimate2(m_shortHalf, nullptr, 0, 0, Wq, Hq, m_shortQuarter);
+    m_matchQuarter.compute(m_shortQuarter, m_shortQuarterMap);
+    const int quarterMax = m_matchQuarter.getMaxValue();
+    m_quarterPeakDetector.setThreshold(std::max(1, static_cast<int>(std::ceil(m_threshold * quarterMax))));
+    m_times.matching += elapsedMs(t);
+    m_quarterPeakDetector.detect(m_shortQuarterMap, m_shortPeaks, m_noRois);
+    // Pixel j of the quarter image is centred on pixel 4 j + 1.5 of the image.
+    for (vpSSLPeak p : m_shortPeaks) {
+      p.value = static_cast<int>(static_cast<long long>(p.value) * mainMax / quarterMax);
+      p.u = 4. * p.u + 1.5;
+      p.v = 4. * p.v + 1.5;
+      m_peaks.push_back(p);
+    }
+    m_times.peaks += elapsedMs(t);
+  }
 }
 
 void vpSSLDetectionPipeline::planCandidateRegions(const vpImage<unsigned char> &normalized)
@@ -690,9 +727,9 @@ bool vpSSLDetectionPipeline::completeTarget(const vpImage<unsigned char> &raw)
   }
   const vpSSLLandmark anchor = m_landmarks[static_cast<size_t>(anchorIndex)];
   // The hypotheses: a rotation of the target about the plane's normal, and the big landmark's true size relative to
-  // its reading (1, or p where the paper and dark surroundings past its outer ring were read as one more ring: the
-  // other landmarks then lie inside the disc read, where no peak is read).
-  Hypothesis hypotheses[kPredictedRotations];
+  // its reading. The rotation comes from a landmark the match holds, else from a detection it left out, else from a
+  // scan of the short-window maps.
+  Hypothesis hypotheses[kDetectionRotations];
   size_t nbHypotheses = 0;
   for (size_t k = 0; k < K && nbHypotheses == 0; ++k) {
     const int d = m_targetMatch.detection[k];
@@ -701,24 +738,59 @@ bool vpSSLDetectionPipeline::completeTarget(const vpImage<unsigned char> &raw)
       hypotheses[nbHypotheses++] = {m_prediction.rotationTo(m_landmarks[static_cast<size_t>(d)], k), 1.};
     }
   }
-  if (nbHypotheses == 0) {
-    scanRotations(anchor, hypotheses, nbHypotheses);
+  const bool matched = nbHypotheses > 0;
+  if (!matched) {
+    detectionRotations(anchorIndex, true, hypotheses, nbHypotheses);
   }
+  bool changed = false;
+  if (tryHypotheses(raw, anchorIndex, hypotheses, nbHypotheses, changed) || matched) {
+    return changed;
+  }
+  scanRotations(anchor, hypotheses, nbHypotheses);
+  if (tryHypotheses(raw, anchorIndex, hypotheses, nbHypotheses, changed) || m_targetMatch.nbMatched > 1) {
+    return changed;
+  }
+  // The match took the biggest detection for the big landmark (one alone has no scale): the big landmark may be
+  // another one, read at an inner copy (its outer ring cut by the frame's edge or an occlusion) beside the others,
+  // of their size.
+  for (size_t d = 0; d < m_landmarks.size(); ++d) {
+    if (static_cast<int>(d) != anchorIndex) {
+      detectionRotations(static_cast<int>(d), false, hypotheses, nbHypotheses);
+      if (tryHypotheses(raw, static_cast<int>(d), hypotheses, nbHypotheses, changed)) {
+        return changed;
+      }
+    }
+  }
+  return changed;
+}
+
+bool vpSSLDetectionPipeline::tryHypotheses(const vpImage<unsigned char> &raw, int anchorIndex,
+                                           const Hypothesis *hypotheses, size_t nbHypotheses, bool &changed)
+{
+  const size_t K = getTarget().size();
+  const vpSSLLandmark anchor = m_landmarks[static_cast<size_t>(anchorIndex)];
   const int W = static_cast<int>(raw.getWidth()), H = static_cast<int>(raw.getHeight());
   vpSSLLandmark read[kMaxTargetLandmarks];
   for (size_t h = 0; h < nbHypotheses; ++h) {
     const Hypothesis &hyp = hypotheses[h];
     const vpSSLLandmark scaled = scaledLandmark(anchor, hyp.scale);
     m_prediction.setAnchor(scaled, m_bigLandmark);
-    size_t nbRead = 0, nbMissing = 0;
+    size_t nbRead = 0, nbMissing = 0, nbFound = 0;
     for (size_t j = 0; j < K && nbRead < kMaxTargetLandmarks; ++j) {
       if (m_targetMatch.detection[j] >= 0) {
         continue;
       }
       ++nbMissing;
       const vpSSLLandmark p = m_prediction.predict(j, hyp.phi);
-      if (!(p.minorRadius >= kMinRadius && p.u >= 0. && p.v >= 0. && p.u <= W - 1. && p.v <= H - 1.) ||
-          insideFound(p.u, p.v, hyp.scale == 1. ? -1 : anchorIndex)) {
+      if (!(p.minorRadius >= kMinRadius && p.u >= 0. && p.v >= 0. && p.u <= W - 1. && p.v <= H - 1.)) {
+        continue;
+      }
+      // Already detected there, at its size: the match left it out only because of the big landmark's reading.
+      if (hyp.scale != 1. && foundAsPredicted(p, anchorIndex)) {
+        ++nbFound;
+        continue;
+      }
+      if (insideFound(p.u, p.v, hyp.scale == 1. ? -1 : anchorIndex)) {
         continue;
       }
       if (readPredicted(raw, p, read[nbRead])) {
@@ -726,14 +798,22 @@ bool vpSSLDetectionPipeline::completeTarget(const vpImage<unsigned char> &raw)
         ++nbRead;
       }
     }
-    // A smaller big landmark than read is believed only when every landmark it predicts is there.
-    if (nbRead == 0 || (hyp.scale != 1. && nbRead < nbMissing)) {
+    // Another size of the big landmark than read is believed only when every landmark it predicts is there.
+    if (hyp.scale == 1. ? nbRead == 0 : nbRead + nbFound < nbMissing) {
       continue;
     }
     if (hyp.scale != 1.) {
+      // The big landmark read again at its size. A larger one must show its outer rings there: two landmarks beside
+      // an inner copy of it (a copy of their size, in an equilateral triangle) are also two of the others beside the
+      // third, whose reading at twice its size finds no outer ring. A smaller one is what the landmarks inside the
+      // disc read say it is.
       vpSSLLandmark big = scaled;
       if (m_radiusEstimator.estimate(raw, big, scaled) && selfSimilar(raw, big)) {
         big.score = anchor.score;
+      } else if (big = scaled, readShaped(raw, big)) {
+        big.score = anchor.score;
+      } else if (hyp.scale > 1.) {
+        continue;
       } else {
         big = scaled;
       }
@@ -743,7 +823,8 @@ bool vpSSLDetectionPipeline::completeTarget(const vpImage<unsigned char> &raw)
     for (size_t i = 0; i < nbRead; ++i) {
       added = keepLandmark(read[i], raw, raw, true, 1.) || added;
     }
-    return added || hyp.scale != 1.;
+    changed = added || hyp.scale != 1.;
+    return true;
   }
   return false;
 }
@@ -757,6 +838,61 @@ vpSSLLandmark vpSSLDetectionPipeline::scaledLandmark(const vpSSLLandmark &l, dou
     r *= scale;
   }
   return s;
+}
+
+void vpSSLDetectionPipeline::detectionRotations(int anchorIndex, bool asRead, Hypothesis *hypotheses,
+                                                size_t &nbHypotheses)
+{
+  // A detection the match left out may be one of the target's other landmarks: the match cannot tell which of two
+  // equal ones it is beside the big landmark alone, nor pair it with a big landmark read at another size (p times
+  // its size where the paper and dark surroundings past the outer ring were read as one more ring; 1 / p where a
+  // frame edge or an occlusion cut the outer ring and an inner copy was read). Each label and size under which the
+  // detection lies at its predicted place, at its predicted size, is a hypothesis.
+  const size_t K = getTarget().size();
+  const double p = getTarget().getP();
+  const double scales[3] = {p, 1. / p, 1.};
+  const vpSSLLandmark anchor = m_landmarks[static_cast<size_t>(anchorIndex)];
+  nbHypotheses = 0;
+  for (size_t d = 0; d < m_landmarks.size(); ++d) {
+    bool matched = static_cast<int>(d) == anchorIndex;
+    for (size_t k = 0; k < K; ++k) {
+      matched = matched || (k != m_bigLandmark && m_targetMatch.detection[k] == static_cast<int>(d));
+    }
+    if (matched) {
+      continue;
+    }
+    for (const double scale : scales) {
+      if (scale == 1. && !asRead) {
+        continue;
+      }
+      m_prediction.setAnchor(scaledLandmark(anchor, scale), m_bigLandmark);
+      for (size_t k = 0; k < K; ++k) {
+        if (k == m_bigLandmark || m_targetMatch.detection[k] >= 0 || nbHypotheses == kDetectionRotations) {
+          continue;
+        }
+        // The rotation puts the prediction on the detection's direction; its distance from the big landmark is
+        // the identifier's test (perspective stretches the plane beyond the big landmark's ellipse).
+        const vpSSLLandmark &l = m_landmarks[d];
+        const double phi = m_prediction.rotationTo(l, k);
+        const vpSSLLandmark q = m_prediction.predict(k, phi);
+        const double ratio = l.radius / q.radius;
+        if (ratio >= kPredictedSize && ratio <= 1. / kPredictedSize &&
+            std::fabs(m_prediction.distanceRatio(l, k) - 1.) <= kDetectionReach) {
+          hypotheses[nbHypotheses++] = {phi, scale};
+        }
+      }
+    }
+  }
+}
+
+bool vpSSLDetectionPipeline::foundAsPredicted(const vpSSLLandmark &p, int skip) const
+{
+  for (size_t i = 0; i < m_landmarks.size(); ++i) {
+    if (static_cast<int>(i) != skip && asPredicted(m_landmarks[i], p)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 void vpSSLDetectionPipeline::scanRotations(const vpSSLLandmark &anchor, Hypothesis *hypotheses, size_t &nbHypotheses)
@@ -835,6 +971,18 @@ double vpSSLDetectionPipeline::shortWindowScore(const vpSSLLandmark &p) const
   return best;
 }
 
+bool vpSSLDetectionPipeline::readShaped(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
+{
+  if (!m_concentricReader.readAt(raw, l)) {
+    return false;
+  }
+  if (m_equalRingCheck) {
+    m_concentricReader.similarity(raw, l);
+    return !m_concentricReader.isEqualRings();
+  }
+  return true;
+}
+
 bool vpSSLDetectionPipeline::readPredicted(const vpImage<unsigned char> &raw, const vpSSLLandmark &p, vpSSLLandmark &l)
 {
   l = p;
@@ -853,9 +1001,7 @@ bool vpSSLDetectionPipeline::readPredicted(const vpImage<unsigned char> &raw, co
       }
     }
   }
-  const double ratio = l.radius / p.radius;
-  return std::hypot(l.u - p.u, l.v - p.v) <= std::max(2., kPredictedReach * p.radius) && ratio >= kPredictedSize &&
-         ratio <= 1. / kPredictedSize;
+  return asPredicted(l, p);
 }
 
 bool vpSSLDetectionPipeline::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw,

@@ -47,6 +47,7 @@ public:
     m_matchCoarse.setNbThreads(n);
     m_matchShort.setNbThreads(n);
     m_matchHalf.setNbThreads(n);
+    m_matchQuarter.setNbThreads(n);
   }
   void setDecimation(unsigned int decimation);
   void setMaxRadius(double r);
@@ -109,7 +110,19 @@ private:
     double phi;
     double scale;
   };
-  // completeTarget() without a second landmark: the best rotations scanned, for either size of the big landmark.
+  // completeTarget(): reads the landmarks each hypothesis predicts, in turn, and keeps those of the first one they
+  // bear out (\e changed: whether it added a landmark or resized the big one); whether one did.
+  bool tryHypotheses(const vpImage<unsigned char> &raw, int anchorIndex, const Hypothesis *hypotheses,
+                     size_t nbHypotheses, bool &changed);
+  // vpSSLConcentricReader::readAt() on \e l's ellipse, then the equal-ring check: whether \e l was read.
+  bool readShaped(const vpImage<unsigned char> &raw, vpSSLLandmark &l);
+  // completeTarget() without a second landmark matched: the rotations and sizes of the big landmark, read as the
+  // detection \e anchorIndex, under which a detection the match left out is one of the target's other landmarks, at
+  // its place and of its size; the size as read among them only if \e asRead.
+  void detectionRotations(int anchorIndex, bool asRead, Hypothesis *hypotheses, size_t &nbHypotheses);
+  // Whether a detection but landmark \e skip lies where \e p is predicted and is of its size.
+  bool foundAsPredicted(const vpSSLLandmark &p, int skip) const;
+  // completeTarget() without any: the best rotations scanned, for either size of the big landmark.
   void scanRotations(const vpSSLLandmark &anchor, Hypothesis *hypotheses, size_t &nbHypotheses);
   // \e l with its outer ellipse scaled by \e scale.
   static vpSSLLandmark scaledLandmark(const vpSSLLandmark &l, double scale);
@@ -135,7 +148,8 @@ private:
   void rereadPredicted(const vpImage<unsigned char> &raw, double scale);
   double scoreAt(const vpImage<unsigned char> &I, double u, double v) const;
   // Full search at full resolution: adds the strongest peaks of the short window's maps of the normalised image and
-  // of its half to m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first.
+  // of its half to m_peaks (values on the scale of the main window's, \e mainMax) and sorts them all, strongest first;
+  // then appends the strongest of the quarter's map (kQuarterWindow).
   void addShortWindowPeaks(const vpImage<unsigned char> &normalized, int mainMax,
                            std::chrono::steady_clock::time_point &t);
   // Full search at full resolution: the regions where w is computed, around the candidates of w / 2 on the normalised
@@ -161,10 +175,12 @@ private:
   unsigned int m_shortWindow;          // 0: no short-window map
   vpSSLMatchingFunction m_matchShort;  // the short window, full searches at full resolution
   vpSSLPeakDetector m_shortPeakDetector;
-  vpSSLMatchingFunction m_matchHalf;      // w / 2 on the normalised image's half: where w is worth computing
-  vpSSLImageBuffer<int> m_halfMap;        // its map
-  std::vector<char> m_activeTiles;        // tiles of the image where w is computed
-  std::vector<vpRect> m_candidateRegions; // those tiles, merged along each row of tiles
+  vpSSLMatchingFunction m_matchHalf;       // w / 2 on the normalised image's half: where w is worth computing
+  vpSSLImageBuffer<int> m_halfMap;         // its map
+  vpSSLMatchingFunction m_matchQuarter;    // kQuarterWindow on the normalised image's quarter: large radii
+  vpSSLPeakDetector m_quarterPeakDetector; // its strongest peaks
+  std::vector<char> m_activeTiles;         // tiles of the image where w is computed
+  std::vector<vpRect> m_candidateRegions;  // those tiles, merged along each row of tiles
   double m_maxRadius;
   bool m_radiusSweep;
   bool m_equalRingCheck;
@@ -190,9 +206,11 @@ private:
   MatchMap m_coarseMap; // the decimated regions of a full-resolution tracking frame
   std::vector<vpSSLPeak> m_peaks;
   std::vector<vpSSLPeak> m_shortPeaks;
-  vpSSLImageBuffer<int> m_shortMap;            // the short window's map of the image
-  vpSSLImageBuffer<unsigned char> m_shortHalf; // the normalised image's half (2x2 averages)
-  vpSSLImageBuffer<int> m_shortHalfMap;        // the short window's map of m_shortHalf
+  vpSSLImageBuffer<int> m_shortMap;               // the short window's map of the image
+  vpSSLImageBuffer<unsigned char> m_shortHalf;    // the normalised image's half (2x2 averages)
+  vpSSLImageBuffer<int> m_shortHalfMap;           // the short window's map of m_shortHalf
+  vpSSLImageBuffer<unsigned char> m_shortQuarter; // the normalised image's quarter (2x2 averages of m_shortHalf)
+  vpSSLImageBuffer<int> m_shortQuarterMap;        // m_matchQuarter's map of m_shortQuarter
   std::vector<vpSSLLandmark> m_landmarks;
   std::vector<int> m_sweep; // Eq. 7 sweep, reused
   vpSSLTargetMatch m_targetMatch;

@@ -11,6 +11,14 @@ double vpSSLTargetPrediction::rotationTo(const vpSSLLandmark &detection, size_t 
   return std::atan2(wy, wx) - std::atan2(m.y - k.y, m.x - k.x);
 }
 
+double vpSSLTargetPrediction::distanceRatio(const vpSSLLandmark &detection, size_t l) const
+{
+  const vpSSLTargetLandmark &k = m_target.getLandmark(m_k), &m = m_target.getLandmark(l);
+  const double du = detection.u - m_anchor.u, dv = detection.v - m_anchor.v;
+  const double wx = m_map.inv[0][0] * du + m_map.inv[0][1] * dv, wy = m_map.inv[1][0] * du + m_map.inv[1][1] * dv;
+  return std::hypot(wx, wy) * k.radius / std::hypot(m.x - k.x, m.y - k.y);
+}
+
 vpSSLLandmark vpSSLTargetPrediction::predict(size_t j, double phi) const
 {
   const vpSSLTargetLandmark &k = m_target.getLandmark(m_k), &m = m_target.getLandmark(j);

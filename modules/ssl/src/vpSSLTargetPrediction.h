@@ -38,6 +38,10 @@ public:
   // \e detection.
   double rotationTo(const vpSSLLandmark &detection, size_t l) const;
 
+  // The distance of \e detection from the anchor, rectified, over the printed distance of the target's landmark \e l
+  // (1 where the detection lies at l's place for the rotation rotationTo() gives).
+  double distanceRatio(const vpSSLLandmark &detection, size_t l) const;
+
   // The outer ellipse of the target's landmark \e j (centre, radius, minorRadius, theta; nothing else set) for the
   // rotation \e phi.
   vpSSLLandmark predict(size_t j, double phi) const;

@@ -101,8 +101,10 @@ public:
     about 28 px. A full search at full resolution (setDecimation(1), not the small-landmark mode) also matches the
     normalised image and its half (2x2 averages) with this window: w and 2 w in image pixels, from 7 px of radius up
     for w = 10, at 1.25 times a quarter of the cost of w = 40. It reads the 16 strongest peaks of each of these maps
-    with those of w = 40, strongest first (the scores of all maps on the same scale). Tracking frames
-    (setRegionsOfInterest()) use w alone.
+    with those of w = 40, strongest first (the scores of all maps on the same scale). With a short window, a full search
+    at full resolution also matches the image's quarter with a window of 20 (80 px in image pixels): landmarks of 40 px
+    and more whose narrow inner rings a blur of 2 to 3 px has wiped out; its 8 strongest peaks are read after all the
+    others. Tracking frames (setRegionsOfInterest()) use w alone.
     \exception vpException unless 0 or in [2, 128].
   */
   void setShortWindow(unsigned int w);
