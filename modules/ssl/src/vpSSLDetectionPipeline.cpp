@@ -103,9 +103,10 @@ const double kMinSimilarity = 0.5;
 const unsigned int kAllAroundBudget = 24;
 const double kSameCentre = 1.5;
 // completeTarget(): rotations tried (the target's, or the best scanned), those a detection left out of the match
-// gives, the most landmarks read per rotation, the scan's step (in predicted minor semi-axes at the predicted centre)
-// and its largest count, how far apart two tried rotations are (rad), and how close to its prediction (in predicted
-// radii) and of what size (radius ratio) a reading must be.
+// gives, and how far (relative) that detection's rectified distance from the big landmark may be from the printed one
+// (vpSSLTargetIdentifier's tolerance); the most landmarks read per rotation, the scan's step (in predicted minor
+// semi-axes at the predicted centre) and its largest count, how far apart two tried rotations are (rad), and how close
+// to its prediction (in predicted radii) and of what size (radius ratio) a reading must be.
 const size_t kPredictedRotations = 3;
 const size_t kDetectionRotations = 8;
 const double kDetectionReach = 0.25;
