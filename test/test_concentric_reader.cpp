@@ -14,6 +14,8 @@
 #include <visp3/ssl_bench/vpSSLCorpusSheet.h>
 #include <visp3/ssl_bench/vpSSLCorpusView.h>
 
+#include "common/ssl_test_corpus_view.h"
+
 namespace {
 // A view without water loss, vignetting or noise (each case adds what it tests), the sheet on dark water.
 vpSSLCorpusViewParams view(double tilt, double depth, double sigma)
@@ -74,18 +76,6 @@ template <typename F> void forEachB(F f)
       }
     }
   }
-}
-
-// A landmark on B's true ellipse.
-vpSSLLandmark trueEllipse(const vpSSLCorpusLandmarkTruth &B)
-{
-  vpSSLLandmark l;
-  l.u = B.u;
-  l.v = B.v;
-  l.radius = B.a;
-  l.minorRadius = B.b;
-  l.theta = B.theta;
-  return l;
 }
 
 vpSSLConcentricReader reader()

@@ -158,9 +158,10 @@ public:
     Equal-ring check (default on). Every landmark read already has to follow \f$ s_p \f$ over its resolved rings
     (vpSSLConcentricReader::similarity() of 0.5 or more), which a bull's-eye of equal-width rings fails when sharp;
     blurred, its outer rings can pass. The check turns away as well a landmark whose ring profile rings of one width
-    explain better, while its inner rings keep their contrast (vpSSLConcentricReader::isEqualRings()): on the
-    negatives of the independent corpus it removes four of the eight false targets without it (blurred bull's-eyes of
-    19 to 42 px), and it also turns away some landmarks read at twice their radius (doc/detector.md).
+    explain better, while its inner rings keep their contrast (vpSSLConcentricReader::isEqualRings()), and one of 10
+    to 40 px whose centre disc is darker than its outer black ring (a landmark's is two thirds white): a bull's-eye
+    with a solid dark centre, a dark speck ringed in light. It also turns away some landmarks read at twice their
+    radius. doc/detector.md gives what each part removes on the negatives of the independent corpus.
   */
   void setEqualRingCheck(bool enable);
   //! Whether the equal-ring check is on (setEqualRingCheck()).
