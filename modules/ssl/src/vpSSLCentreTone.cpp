@@ -19,9 +19,14 @@ bool bandMean(const vpImage<unsigned char> &I, const vpSSLLandmark &l, double rh
   for (int i = 0; i < kRadiiPerBand; ++i) {
     const double rho = rho0 + (rho1 - rho0) * i / (kRadiiPerBand - 1);
     const int n = std::max(kMinSamplesPerEllipse, static_cast<int>(2. * M_PI * rho * l.radius));
+    // The angles 2 pi k / n by rotation: two sines per ellipse rather than per sample.
+    const double cd = std::cos(2. * M_PI / n), sd = std::sin(2. * M_PI / n);
+    double ca = 1., sa = 0.;
     for (int k = 0; k < n; ++k) {
-      const double a = 2. * M_PI * k / n;
-      const double x = rho * l.radius * std::cos(a), y = rho * l.minorRadius * std::sin(a);
+      const double x = rho * l.radius * ca, y = rho * l.minorRadius * sa;
+      const double next = ca * cd - sa * sd;
+      sa = sa * cd + ca * sd;
+      ca = next;
       const double u = l.u + c * x - s * y, v = l.v + s * x + c * y;
       if (!(u >= 0. && v >= 0. && u < W - 1. && v < H - 1.)) {
         return false;

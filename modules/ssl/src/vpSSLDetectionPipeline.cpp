@@ -1015,6 +1015,15 @@ bool vpSSLDetectionPipeline::readPredicted(const vpImage<unsigned char> &raw, co
 bool vpSSLDetectionPipeline::keepLandmark(vpSSLLandmark &l, const vpImage<unsigned char> &raw,
                                           const vpImage<unsigned char> &normalized, bool rowOnly, double scale)
 {
+  // Two peaks on the same landmark: keep the stronger one (peaks come strongest first). Most readings of a frame are
+  // such repeats: they are dropped before the tests below. Centres and minor semi-axes in image pixels.
+  const double u = m_upsample ? 0.5 * (l.u + 0.5) - 0.5 : l.u, v = m_upsample ? 0.5 * (l.v + 0.5) - 0.5 : l.v;
+  const double minor = m_upsample ? 0.5 * l.minorRadius : l.minorRadius;
+  for (const vpSSLLandmark &k : m_landmarks) {
+    if (std::hypot(k.u - u, k.v - v) < 0.5 * std::min(k.minorRadius, minor)) {
+      return false;
+    }
+  }
   // The centre disc of a landmark is two thirds white, so its mean level lies above the outer black ring's while blur
   // leaves the rings resolved; a bull's-eye with a solid dark centre, or a dark blob ringed in light, whose outer rings
   // pass for a landmark's, has it darker than the black ring.
@@ -1050,12 +1059,6 @@ bool vpSSLDetectionPipeline::keepLandmark(vpSSLLandmark &l, const vpImage<unsign
     l.radiusEq7 *= 0.5;
     for (double &r : l.directionalRadius) {
       r *= 0.5;
-    }
-  }
-  // Two peaks on the same landmark: keep the stronger one (peaks come strongest first).
-  for (const vpSSLLandmark &k : m_landmarks) {
-    if (std::hypot(k.u - l.u, k.v - l.v) < 0.5 * std::min(k.minorRadius, l.minorRadius)) {
-      return false;
     }
   }
   m_landmarks.push_back(l);
