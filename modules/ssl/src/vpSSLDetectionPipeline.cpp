@@ -1052,10 +1052,10 @@ bool vpSSLDetectionPipeline::keepLandmark(vpSSLLandmark &l, const vpImage<unsign
     l.radiusEq7 = vpSSLRadiusEstimator::sweep(normalized, m_match, su, sv, maxWindow, m_sweep);
   }
   if (m_upsample) {
-    l.u = 0.5 * (l.u + 0.5) - 0.5;
-    l.v = 0.5 * (l.v + 0.5) - 0.5;
+    l.u = u;
+    l.v = v;
     l.radius *= 0.5;
-    l.minorRadius *= 0.5;
+    l.minorRadius = minor;
     l.radiusEq7 *= 0.5;
     for (double &r : l.directionalRadius) {
       r *= 0.5;
