@@ -399,6 +399,32 @@ TEST(DetectorCorpus, CentreToneTurnsAwayDarkCentredClutter)
   }
 }
 
+TEST(DetectorCorpus, CoreRiseTurnsAwayBullsEyesEndingInADarkDot)
+{
+  // Negatives of the corpus where bull's-eyes of 11 to 35 px, rings of one width ending in a dark dot, pass for
+  // landmarks (a lighter centre disc than the outer black ring, so the centre tone alone keeps them) and make a false
+  // target with the bull's-eye checks off; with them on (the default), the light ring across the band about p^2 R
+  // turns them away and no target is found.
+  const vpSSLTarget target = vpSSLTarget::ssl3a3();
+  const vpSSLCorpusSheet &sheet = sslSheet();
+  vpSSLCorpusPhotos photos;
+  if (photos.load() == 0)
+    GTEST_SKIP() << photos.getMessage() << " (the negatives are drawn with photo backgrounds possible)";
+  vpSSLDetector byDefault(target), unchecked(target);
+  byDefault.setNbThreads(1);
+  unchecked.setNbThreads(1);
+  unchecked.setEqualRingCheck(false);
+  vpSSLCorpusView view(target);
+  const std::pair<uint64_t, uint64_t> negatives[] = {{9, 229}, {10, 9}, {10, 98}, {11, 111}, {13, 4}};
+  for (const auto &n : negatives) {
+    view.render(vpSSLCorpusView::draw(target, photos, n.first, n.second, false), &sheet, photos);
+    unchecked.detect(view.getImage());
+    byDefault.detect(view.getImage());
+    EXPECT_TRUE(unchecked.getTargetMatch().found) << "seed " << n.first << ", negative " << n.second;
+    EXPECT_FALSE(byDefault.getTargetMatch().found) << "seed " << n.first << ", negative " << n.second;
+  }
+}
+
 TEST(DetectorCorpus, BlurredRingModelFindsFaintBlurredB)
 {
   // doc/detector.md: six views of seed 1 whose B (11 to 38 px, blurred, a few grey levels of ring contrast) the
