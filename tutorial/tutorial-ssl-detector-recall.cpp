@@ -65,6 +65,8 @@ Options:
   --no-blur-model    vpSSLDetector::setBlurredRingModel(false) (on by default).
   --no-target-completion
                      vpSSLDetector::setTargetCompletion(false) (on by default).
+  --all-around-budget N
+                     vpSSLDetector::setAllAroundBudget(N), 0 to 100000 (default 24).
   --apriltag         Also render every view with an AprilTag 36h11 (id 0, 0.2376 m side,
                      centred where the SSL sheet is) instead of the SSL sheet, and run
                      vpDetectorAprilTag (36h11, quad decimate 2, one thread) on it: the tables
@@ -80,6 +82,7 @@ struct Options
   unsigned long long seed = 1;
   std::string outputDir = "corpus-out";
   bool small = false, equalRings = true, blurModel = true, completion = true, apriltag = false, explainMisses = false;
+  long long allAroundBudget = -1; // -1: the detector's default
 };
 
 bool parse(int argc, char **argv, Options &o)
@@ -126,6 +129,8 @@ bool parse(int argc, char **argv, Options &o)
       o.blurModel = false;
     } else if (a == "--no-target-completion") {
       o.completion = false;
+    } else if (a == "--all-around-budget" && value(v) && v <= 100000) {
+      o.allAroundBudget = static_cast<long long>(v);
     } else if (a == "--explain-misses") {
       o.explainMisses = true;
     } else if (a == "--apriltag") {
@@ -256,6 +261,8 @@ void configure(vpSSLDetector &d, const Options &o)
   d.setEqualRingCheck(o.equalRings);
   d.setBlurredRingModel(o.blurModel);
   d.setTargetCompletion(o.completion);
+  if (o.allAroundBudget >= 0)
+    d.setAllAroundBudget(static_cast<unsigned int>(o.allAroundBudget));
 }
 } // namespace
 

@@ -65,6 +65,11 @@ Options:
   --no-target-completion
                       Do not read the target's missing landmarks where its big one puts them
                       (vpSSLDetector::setTargetCompletion(false); doc/detector.md).
+  --all-around-budget N
+                      Candidates per frame read all around where the rays give up, 0 to
+                      100000 (default 24; vpSSLDetector::setAllAroundBudget(); more find a few
+                      more faint small landmarks on noisy water, for more time per frame and
+                      more false readings; doc/detector.md).
   --decimation D      1 (default) or 2: with 2, the matching function runs on the image
                       decimated twice (the fast mode, for landmarks of about 25 px and more),
                       the rings are still read at full resolution.
@@ -221,7 +226,7 @@ int run(int argc, char **argv)
        completion = true;
   unsigned int window = 40, threads = 0, decimation = 1;
   double threshold = 0.07;
-  long maxFrames = -1;
+  long maxFrames = -1, allAroundBudget = -1; // -1: the detector's default
   // One option: false for an option this tutorial does not know.
   const auto option = [&](const std::string &a, const auto &value) {
     auto number = [&](const std::string &v) { return ssltut::parseNumber("option " + a, v); };
@@ -249,6 +254,8 @@ int run(int argc, char **argv)
       blurModel = false;
     } else if (a == "--no-target-completion") {
       completion = false;
+    } else if (a == "--all-around-budget") {
+      allAroundBudget = static_cast<long>(integer(value(), 0, 100000));
     } else if (a == "--decimation") {
       decimation = static_cast<unsigned int>(integer(value(), 1, 2));
     } else if (a == "--no-normalize") {
@@ -332,6 +339,9 @@ int run(int argc, char **argv)
   detector.setEqualRingCheck(equalRings);
   detector.setBlurredRingModel(blurModel);
   detector.setTargetCompletion(completion);
+  if (allAroundBudget >= 0) {
+    detector.setAllAroundBudget(static_cast<unsigned int>(allAroundBudget));
+  }
   detector.setDecimation(decimation);
   detector.setBrightnessNormalization(normalize);
   detector.setNbThreads(threads);

@@ -7,7 +7,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector "$@"
 
 "$BIN" --help > "$WORK/help" || fail "--help exit code"
 for opt in --input --camera --camera-name --target --json --output --display --window --small-landmarks --no-equal-rings --no-blur-model \
-           --decimation --threshold --no-normalize --threads --max-frames --help; do
+           --all-around-budget --decimation --threshold --no-normalize --threads --max-frames --help; do
   grep -q -- "$opt" "$WORK/help" || fail "--help does not mention $opt"
 done
 
@@ -107,6 +107,11 @@ printf 'name t\nlandmark B 0 0 0 abc\n' > "$WORK/bad-target.txt"
 "$BIN" --input x --decimation 3 > /dev/null 2> "$WORK/dec.err"
 [ $? -eq 2 ] && [ "$(wc -l < "$WORK/dec.err")" -eq 1 ] && grep -q -- "--decimation" "$WORK/dec.err" ||
   fail "bad decimation: $(cat "$WORK/dec.err")"
+for bad in -1 100001 abc; do
+  "$BIN" --input x --all-around-budget "$bad" > /dev/null 2> "$WORK/budget.err"
+  [ $? -eq 2 ] && [ "$(wc -l < "$WORK/budget.err")" -eq 1 ] && grep -q -- "--all-around-budget" "$WORK/budget.err" ||
+    fail "bad all-around budget $bad: $(cat "$WORK/budget.err")"
+done
 "$BIN" > /dev/null 2>&1
 [ $? -eq 2 ] || fail "missing --input must exit 2"
 e2e_finish

@@ -7,13 +7,19 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.bash" tutorial-ssl-detector-recall
 if "$BIN" --help >help.txt 2>help.err; then
   missing=""
   for o in --views --negatives --seed --threads --output-dir --save-images --save-misses --explain-misses \
-           --decimation --small-landmarks --no-equal-rings --no-blur-model --apriltag --help; do
+           --decimation --small-landmarks --no-equal-rings --no-blur-model --all-around-budget --apriltag --help; do
     grep -q -- "$o" help.txt || missing="$missing $o"
   done
   [ -z "$missing" ] && pass "--help lists every option" || fail "--help does not list:$missing"
 else
   fail "--help exited non-zero"
 fi
+
+for bad in 100001 abc; do
+  "$BIN" --all-around-budget "$bad" --views 1 --negatives 0 --output-dir bad >/dev/null 2>bad.err
+  [ $? -eq 2 ] && grep -q -- "--all-around-budget" bad.err && pass "--all-around-budget $bad is refused" ||
+    fail "--all-around-budget $bad: $(cat bad.err)"
+done
 
 # The first 35 views of seed 1 miss landmarks that the reader reads from their true centre and others it does not.
 run_or_stop "--explain-misses" --views 35 --negatives 0 --seed 1 --threads 2 --explain-misses --output-dir out

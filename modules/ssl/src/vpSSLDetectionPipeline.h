@@ -56,6 +56,7 @@ public:
   void setEqualRingCheck(bool enable) { m_equalRingCheck = enable; }
   void setBlurredRingModel(bool enable) { m_concentricReader.setBlurredRingModel(enable); }
   void setTargetCompletion(bool enable) { m_targetCompletion = enable; }
+  void setAllAroundBudget(unsigned int candidates);
   void setShortWindow(unsigned int w);
   void setRegionsOfInterest(const std::vector<vpRect> &rois) { m_planner.setRegions(rois); }
 
@@ -68,6 +69,7 @@ public:
   bool getEqualRingCheck() const { return m_equalRingCheck; }
   bool getBlurredRingModel() const { return m_concentricReader.getBlurredRingModel(); }
   bool getTargetCompletion() const { return m_targetCompletion; }
+  unsigned int getAllAroundBudget() const { return m_allAroundBudget; }
   unsigned int getShortWindow() const { return m_shortWindow; }
   const vpSSLTarget &getTarget() const { return m_identifier.getTarget(); }
   bool getLastSearchWasFull() const { return m_lastSearchWasFull; }
@@ -161,7 +163,8 @@ private:
   vpSSLPeakDetector m_peakDetector;
   vpSSLRadiusEstimator m_radiusEstimator;
   vpSSLConcentricReader m_concentricReader;
-  unsigned int m_allAroundLeft = 0;           // candidates vpSSLConcentricReader may still read this frame
+  unsigned int m_allAroundBudget = 0;         // candidates vpSSLConcentricReader may read per frame
+  unsigned int m_allAroundLeft = 0;           // of which it may still read this frame
   std::vector<vpImagePoint> m_allAroundTried; // centres it read nothing at this frame
   vpSSLTargetIdentifier m_identifier;
   vpSSLTargetPrediction m_prediction;

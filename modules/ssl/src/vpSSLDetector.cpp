@@ -95,6 +95,14 @@ bool vpSSLDetector::getTargetCompletion() const
 {
   return m_impl->getTargetCompletion();
 }
+void vpSSLDetector::setAllAroundBudget(unsigned int candidates)
+{
+  m_impl->setAllAroundBudget(candidates);
+}
+unsigned int vpSSLDetector::getAllAroundBudget() const
+{
+  return m_impl->getAllAroundBudget();
+}
 void vpSSLDetector::setShortWindow(unsigned int w)
 {
   m_impl->setShortWindow(w);
