@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -28,6 +29,7 @@
 #include <visp3/ssl_bench/vpSSLCorpusSheet.h>
 #include <visp3/ssl_bench/vpSSLCorpusView.h>
 
+#include "ssl_tutorial_common.h"
 #include "ssl_tutorial_options.h"
 
 namespace {
@@ -73,8 +75,12 @@ Options:
                      gain the target and AprilTag columns, on B's bins.
   --help             This help.
 
-Exit status: 0 on success, 2 on a bad option.
+Exit status: 0 on success, 2 on a bad option or value, 1 on an error while running (one
+line on stderr: out of memory, an image that cannot be written).
 )";
+
+// Largest count of views, of negatives and of saved images: a run's results are held in memory.
+const long long kMaxViews = 100000;
 
 struct Options
 {
@@ -85,40 +91,34 @@ struct Options
   long long allAroundBudget = -1; // -1: the detector's default
 };
 
-bool parse(int argc, char **argv, Options &o)
+// Reads the command line into \e o. \exception ssltut::UsageError on a bad option or value (exit status 2).
+void parse(int argc, char **argv, Options &o)
 {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&](unsigned long long &v) {
+    // The value of a numeric option: an integer in [lo, hi], else a UsageError naming the option (exit status 2).
+    auto integer = [&](long long lo, long long hi) {
       if (i + 1 >= argc)
-        return false;
-      char *end = nullptr;
-      v = std::strtoull(argv[++i], &end, 10);
-      return end != nullptr && *end == '\0';
+        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
+      return ssltut::parseInteger("option " + a, argv[++i], lo, hi);
     };
-    unsigned long long v = 0;
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (a == "--views" && value(v)) {
-      o.views = static_cast<unsigned int>(v);
-    } else if (a == "--negatives" && value(v)) {
-      o.negatives = static_cast<unsigned int>(v);
-    } else if (a == "--seed" && value(v)) {
-      o.seed = v;
+    } else if (a == "--views") {
+      o.views = static_cast<unsigned int>(integer(0, kMaxViews));
+    } else if (a == "--negatives") {
+      o.negatives = static_cast<unsigned int>(integer(0, kMaxViews));
+    } else if (a == "--seed") {
+      o.seed = static_cast<unsigned long long>(integer(0, std::numeric_limits<long long>::max()));
     } else if (a == "--threads" && i + 1 < argc) {
-      try {
-        o.threads = ssltut::parseThreads(a, argv[++i], false, 256);
-      } catch (const ssltut::UsageError &e) {
-        std::cerr << "tutorial-ssl-detector-recall: " << e.what() << std::endl;
-        return false;
-      }
-    } else if (a == "--save-images" && value(v)) {
-      o.saveImages = static_cast<unsigned int>(v);
-    } else if (a == "--save-misses" && value(v)) {
-      o.saveMisses = static_cast<unsigned int>(v);
-    } else if (a == "--decimation" && value(v) && (v == 1 || v == 2)) {
-      o.decimation = static_cast<unsigned int>(v);
+      o.threads = ssltut::parseThreads(a, argv[++i], false, 256);
+    } else if (a == "--save-images") {
+      o.saveImages = static_cast<unsigned int>(integer(0, kMaxViews));
+    } else if (a == "--save-misses") {
+      o.saveMisses = static_cast<unsigned int>(integer(0, kMaxViews));
+    } else if (a == "--decimation") {
+      o.decimation = static_cast<unsigned int>(integer(1, 2));
     } else if (a == "--output-dir" && i + 1 < argc) {
       o.outputDir = argv[++i];
     } else if (a == "--small-landmarks") {
@@ -129,18 +129,16 @@ bool parse(int argc, char **argv, Options &o)
       o.blurModel = false;
     } else if (a == "--no-target-completion") {
       o.completion = false;
-    } else if (a == "--all-around-budget" && value(v) && v <= 100000) {
-      o.allAroundBudget = static_cast<long long>(v);
+    } else if (a == "--all-around-budget") {
+      o.allAroundBudget = integer(0, 100000);
     } else if (a == "--explain-misses") {
       o.explainMisses = true;
     } else if (a == "--apriltag") {
       o.apriltag = true;
     } else {
-      std::cerr << "tutorial-ssl-detector-recall: bad option or value: " << a << " (see --help)" << std::endl;
-      return false;
+      throw ssltut::UsageError("bad option or value: " + a + " (see --help)");
     }
   }
-  return true;
 }
 
 // The true tag corners (px) of a view: the sheet's square through the view's homography.
@@ -266,11 +264,10 @@ void configure(vpSSLDetector &d, const Options &o)
 }
 } // namespace
 
-int main(int argc, char **argv)
+int run(int argc, char **argv)
 {
   Options o;
-  if (!parse(argc, argv, o))
-    return 2;
+  parse(argc, argv, o);
   const auto t0 = std::chrono::steady_clock::now();
   const vpSSLTarget target = vpSSLTarget::ssl3a3();
   vpSSLCorpusPhotos photos;
@@ -384,4 +381,9 @@ int main(int argc, char **argv)
     explainMisses(results, target, sheet, photos, o);
   std::cerr << "tutorial-ssl-detector-recall: " << csv << " written" << std::endl;
   return 0;
+}
+
+int main(int argc, char **argv)
+{
+  return ssltut::guardedMain("tutorial-ssl-detector-recall", [&] { return run(argc, argv); });
 }

@@ -15,10 +15,14 @@ else
   fail "--help exited non-zero"
 fi
 
-for bad in 100001 abc; do
-  "$BIN" --all-around-budget "$bad" --views 1 --negatives 0 --output-dir bad >/dev/null 2>bad.err
-  [ $? -eq 2 ] && grep -q -- "--all-around-budget" bad.err && pass "--all-around-budget $bad is refused" ||
-    fail "--all-around-budget $bad: $(cat bad.err)"
+# A bad count is one line on stderr and exit status 2: never wrapped (-1 is not 2^64 - 1 views) nor read as 0.
+for bad in "--all-around-budget 100001" "--all-around-budget abc" "--views -1" "--views 99999999999" "--views ''" \
+           "--negatives -1" "--seed -3" "--save-images x" "--decimation 3"; do
+  eval "\"\$BIN\" $bad --output-dir bad" >/dev/null 2>bad.err
+  status=$?
+  opt=${bad%% *}
+  [ $status -eq 2 ] && [ "$(wc -l <bad.err)" -eq 1 ] && grep -q -- "$opt" bad.err && pass "$bad is refused" ||
+    fail "$bad: exit $status, $(cat bad.err)"
 done
 
 # The first 35 views of seed 1 miss landmarks that the reader reads from their true centre and others it does not.
