@@ -705,8 +705,8 @@ bool vpSSLDetectionPipeline::selfSimilar(const vpImage<unsigned char> &raw, cons
 bool vpSSLDetectionPipeline::readAllAround(const vpImage<unsigned char> &raw, vpSSLLandmark &l)
 {
   // Only a candidate the rays found point-symmetric (a landmark is, under any affine view and symmetric blur;
-  // clutter seldom is), from the centre that test settled on; at most kAllAroundBudget per frame, the strongest
-  // peaks first (a landmark's are among them), which bounds the cost of a frame full of symmetric clutter.
+  // clutter seldom is), from the centre that test settled on; at most the frame's budget (setAllAroundBudget()), the
+  // strongest peaks first (a landmark's are among them), which bounds the cost of a frame full of symmetric clutter.
   double u = 0., v = 0.;
   if (m_allAroundLeft == 0 || !m_radiusEstimator.getLastSymmetric(u, v) ||
       insideFound(m_upsample ? 0.5 * (u + 0.5) - 0.5 : u, m_upsample ? 0.5 * (v + 0.5) - 0.5 : v)) {
