@@ -96,12 +96,9 @@ void parse(int argc, char **argv, Options &o)
 {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    // The value of a numeric option: an integer in [lo, hi], else a UsageError naming the option (exit status 2).
-    auto integer = [&](long long lo, long long hi) {
-      if (i + 1 >= argc)
-        throw ssltut::UsageError("option " + a + " needs a value (see --help)");
-      return ssltut::parseInteger("option " + a, argv[++i], lo, hi);
-    };
+    // An option's value, and a numeric one in [lo, hi]; else a UsageError naming the option (exit status 2).
+    auto value = [&]() { return ssltut::optionValue(argc, argv, i, ssltut::MissingValue::SeeHelp); };
+    auto integer = [&](long long lo, long long hi) { return ssltut::parseInteger("option " + a, value(), lo, hi); };
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       std::exit(0);
@@ -111,16 +108,16 @@ void parse(int argc, char **argv, Options &o)
       o.negatives = static_cast<unsigned int>(integer(0, kMaxViews));
     } else if (a == "--seed") {
       o.seed = static_cast<unsigned long long>(integer(0, std::numeric_limits<long long>::max()));
-    } else if (a == "--threads" && i + 1 < argc) {
-      o.threads = ssltut::parseThreads(a, argv[++i], false, 256);
+    } else if (a == "--threads") {
+      o.threads = ssltut::parseThreads(a, value(), false, 256);
     } else if (a == "--save-images") {
       o.saveImages = static_cast<unsigned int>(integer(0, kMaxViews));
     } else if (a == "--save-misses") {
       o.saveMisses = static_cast<unsigned int>(integer(0, kMaxViews));
     } else if (a == "--decimation") {
       o.decimation = static_cast<unsigned int>(integer(1, 2));
-    } else if (a == "--output-dir" && i + 1 < argc) {
-      o.outputDir = argv[++i];
+    } else if (a == "--output-dir") {
+      o.outputDir = value();
     } else if (a == "--small-landmarks") {
       o.small = true;
     } else if (a == "--no-equal-rings") {
