@@ -348,10 +348,8 @@ TEST(DetectorCorpus, HalfImageWindowFindsLandmarksBetweenTheOtherWindows)
 // The all-around reader's budget (vpSSLDetector::setAllAroundBudget(), doc/detector.md "Its budget"), both ways. Two B
 // of seed 1 of the corpus, 13 and 14 px, 5 and 7 noise sigmas of contrast, on flat noisy water whose noise peaks the
 // rays give up on and the reader reads in vain first: their reading is the 30th and the 37th of their frame, so the
-// default budget of 24 misses them and 48 reads them within 10 % of their radius. A negative of seed 13 where 48 reads
-// a false landmark past the 24th candidate (a faint bull's-eye of 17.9 x 6.4 px), a false target the default does not
-// give. And one of seed 6 where 48 reads an ellipse of 12.7 x 5.9 px centred on the image's last rows, its black ring
-// partly out of the image: the centre tone, measured on the part of its bands inside the image, turns it away.
+// default budget of 24 misses them and 48 reads them within 10 % of their radius. Two negatives, seeds 6 and 13, where
+// 48 reads a false landmark past the 24th candidate, a false target the default does not give.
 TEST(DetectorCorpus, AllAroundBudgetTradesFaintLandmarksForFalseReadings)
 {
   const vpSSLTarget target = vpSSLTarget::ssl3a3();
@@ -380,7 +378,7 @@ TEST(DetectorCorpus, AllAroundBudgetTradesFaintLandmarksForFalseReadings)
     byDefault.detect(view.getImage());
     wider.detect(view.getImage());
     EXPECT_FALSE(byDefault.getTargetMatch().found) << "seed " << n.first << ", negative " << n.second;
-    EXPECT_EQ(wider.getTargetMatch().found, n.first == 13) << "seed " << n.first << ", negative " << n.second;
+    EXPECT_TRUE(wider.getTargetMatch().found) << "seed " << n.first << ", negative " << n.second;
   }
 }
 

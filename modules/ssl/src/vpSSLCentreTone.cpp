@@ -12,18 +12,16 @@ const int kMinSamplesPerEllipse = 16;
 // each on every ellipse at least).
 const int kSectors = 8;
 
-// Mean level over the part inside the image of the band [rho0, rho1] of relative radii and, if error is given, the
-// spread (standard deviation) of its sectors' means over the square root of their number (each ellipse's samples cut
-// into kSectors by their parametric angle, the sectors wholly outside the image left out); false if less than half of
-// the band's samples lie inside the image, or fewer than two sectors do. A landmark cut by the image border, whose
-// black ring leaves the image on one side, is still measured on the rest of it.
+// Mean level over the band [rho0, rho1] of relative radii and, if error is given, the spread (standard deviation) of
+// its kSectors sectors' means over sqrt(kSectors) (each ellipse's samples cut by their parametric angle); false if a
+// sample leaves the image.
 bool bandMean(const vpImage<unsigned char> &I, const vpSSLLandmark &l, double rho0, double rho1, double &mean,
               double *error = nullptr)
 {
   const double c = std::cos(l.theta), s = std::sin(l.theta);
   const double W = static_cast<double>(I.getWidth()), H = static_cast<double>(I.getHeight());
   double sum = 0., sectorSum[kSectors] = {0.};
-  long count = 0, total = 0, sectorCount[kSectors] = {0};
+  long count = 0, sectorCount[kSectors] = {0};
   for (int i = 0; i < kRadiiPerBand; ++i) {
     const double rho = rho0 + (rho1 - rho0) * i / (kRadiiPerBand - 1);
     const int n = std::max(kMinSamplesPerEllipse, static_cast<int>(2. * M_PI * rho * l.radius));
@@ -36,9 +34,8 @@ bool bandMean(const vpImage<unsigned char> &I, const vpSSLLandmark &l, double rh
       sa = sa * cd + ca * sd;
       ca = next;
       const double u = l.u + c * x - s * y, v = l.v + s * x + c * y;
-      ++total;
       if (!(u >= 0. && v >= 0. && u < W - 1. && v < H - 1.)) {
-        continue;
+        return false;
       }
       const int u0 = static_cast<int>(u), v0 = static_cast<int>(v);
       const double fu = u - u0, fv = v - v0;
@@ -51,26 +48,16 @@ bool bandMean(const vpImage<unsigned char> &I, const vpSSLLandmark &l, double rh
       ++sectorCount[q];
     }
   }
-  if (2 * count < total) {
-    return false;
-  }
-  double m = 0., mm = 0.;
-  int sectors = 0;
-  for (int q = 0; q < kSectors; ++q) {
-    if (sectorCount[q] > 0) {
+  mean = sum / count;
+  if (error != nullptr) {
+    double m = 0., mm = 0.;
+    for (int q = 0; q < kSectors; ++q) {
       const double g = sectorSum[q] / sectorCount[q];
       m += g;
       mm += g * g;
-      ++sectors;
     }
-  }
-  if (sectors < 2) {
-    return false;
-  }
-  mean = sum / count;
-  if (error != nullptr) {
-    m /= sectors;
-    *error = std::sqrt(std::max(0., (mm / sectors - m * m) / (sectors - 1)));
+    m /= kSectors;
+    *error = std::sqrt(std::max(0., (mm / kSectors - m * m) / (kSectors - 1)));
   }
   return true;
 }

@@ -46,10 +46,7 @@ struct Reading
   the band from 0.8 p^2 to 1.2 p^2, the white ring from 1.06 p to 0.96 sqrt(p), the black ring from 1.05 sqrt(p) to
   0.96 (0.3, 0.106, 0.2-0.3, 0.53-0.68 and 0.74-0.96 for p = 0.5: the rings' bands clear of the printed edges by a few
   tenths of a ring).
-  Near the image border each band is measured on its samples inside the image (bilinear samples need their four
-  pixels), so that an ellipse whose black ring leaves the image on one side is still tested on the rest.
-  \return false (\e reading untouched) if less than half of a band's samples lie inside the image, the landmark's axes
-  are not positive and finite,
+  \return false (\e reading untouched) if a sample leaves the image, the landmark's axes are not positive and finite,
   or the two rings' levels differ by less than a grey level.
 */
 bool measure(const vpImage<unsigned char> &I, const vpSSLLandmark &landmark, double p, Reading &reading);

@@ -197,8 +197,8 @@ public:
     point-symmetric candidate (default 24), strongest peaks first; 0 leaves the rays alone. On flat noisy water the
     stretched sensor noise gives dozens of such candidates, each read in vain, as strong as a faint small landmark's,
     which the budget may then not reach: on the independent corpus a budget of 48 finds 0.7 to 1 % more of the B
-    within 60 degrees of the normal, and more S1 and S2, for 0.5 to 1.4 ms more per image on average and one more false
-    target on 3,400 negatives (doc/detector.md, "Its budget").
+    within 60 degrees of the normal, and more S1 and S2, for 0.5 to 1.4 ms more per image on average and two more false
+    targets on 3,400 negatives (doc/detector.md, "Its budget").
   */
   void setAllAroundBudget(unsigned int candidates);
   //! Candidates per frame the all-around reader may read (setAllAroundBudget()).
